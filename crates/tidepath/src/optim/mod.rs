@@ -1,0 +1,61 @@
+//! Box-bounded continuous minimisation.
+//!
+//! An optimizer sees only a bounded vector and a cost ([`Objective`]). It implements `init` and
+//! `step`; the [`runner`] owns the loop, the budget, the best-so-far history, the evaluation
+//! count and the parallelism, so every algorithm gets them the same way.
+//!
+//! Determinism: optimizers draw all random numbers for an iteration from `ctx.rng()` in a fixed
+//! order and only then evaluate the population with [`Context::evaluate_population`]. Evaluation
+//! is a pure function of the vector, so results are bit-identical for any rayon thread count.
+
+pub mod context;
+pub mod de;
+pub mod functions;
+pub mod ga;
+pub mod population;
+pub mod pso;
+pub mod runner;
+
+pub use context::Context;
+pub use population::Population;
+pub use runner::{run, Budget, Progress, RunResult, StopReason};
+
+/// Reusable buffers for one evaluation, so the hot path never allocates.
+/// Each rayon worker gets its own; objectives that need none ignore it.
+#[derive(Default, Debug)]
+pub struct Scratch {
+    pub points: Vec<crate::geom::Vec3>,
+    pub times: Vec<f64>,
+    pub values: Vec<f64>,
+}
+
+/// A box-bounded cost to minimise.
+pub trait Objective: Sync {
+    fn dim(&self) -> usize;
+    fn lower(&self) -> &[f64];
+    fn upper(&self) -> &[f64];
+    /// The cost of `x`. Must be a pure function of `x` (no interior randomness).
+    fn evaluate(&self, x: &[f64], scratch: &mut Scratch) -> f64;
+    /// Brings `x` back into the feasible box (and any per-step limits the encoding owns).
+    /// The default clamps to the bounds.
+    fn repair(&self, x: &mut [f64]) {
+        for ((v, lo), hi) in x.iter_mut().zip(self.lower()).zip(self.upper()) {
+            *v = v.clamp(*lo, *hi);
+        }
+    }
+    /// True when one evaluation is costly enough (microseconds) that a population should be
+    /// evaluated in parallel. Cheap analytic test functions say false.
+    fn parallel_hint(&self) -> bool {
+        false
+    }
+}
+
+/// One iteration-based minimiser.
+pub trait Optimizer: Send {
+    /// The planner id (`pso`, `ga`, ...).
+    fn id(&self) -> &'static str;
+    /// Creates and evaluates the initial population.
+    fn init(&mut self, ctx: &mut Context<'_>);
+    /// One iteration (generation).
+    fn step(&mut self, ctx: &mut Context<'_>);
+}
