@@ -1,1 +1,214 @@
-//! placeholder: written by the optimizer helper
+//! Differential evolution, DE/rand/1/bin.
+//!
+//! Follows Storn & Price, "Differential Evolution – A Simple and Efficient Heuristic for Global
+//! Optimization over Continuous Spaces" (J. Global Optimization 11, 1997), section 2:
+//!
+//! ```text
+//! mutation (eq. 2):   v = x_r1 + F (x_r2 - x_r3)        r1, r2, r3 distinct, all != i
+//! crossover (eq. 4):  u_j = v_j  if rand_j <= CR or j == jrand,  else x_ij
+//! selection:          x_i <- u  if f(u) <= f(x_i)       (one-to-one, greedy)
+//! ```
+//!
+//! `jrand` (Storn & Price's `rnbr(i)`) guarantees that at least one component comes from the
+//! mutant. Defaults F = 0.5, CR = 0.9, NP = 40.
+//!
+//! Choices:
+//! * Bounds: a mutant component outside the box is set to the midpoint between the parent's
+//!   component and the violated bound (the rule used by JADE, Zhang & Sanderson 2009; Storn &
+//!   Price 1997 leave bounds open), so trial vectors stay inside the box without piling up on
+//!   the bound; the objective's own repair runs afterwards.
+//! * Generational: all trial vectors are built from the population of the previous generation,
+//!   then evaluated together, then selected.
+//! * Random draws per target `i`, in order: r1, r2, r3 (rejection sampling), jrand, then one
+//!   U(0,1) per component (drawn for every component, including jrand).
+//! * `rand_j < CR` is used (a continuous draw, so the same as `<=` in distribution).
+
+use rand::Rng as _;
+
+use super::{Context, Optimizer, Population};
+use crate::error::{Error, Result};
+
+/// DE/rand/1/bin parameters.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct DeParams {
+    /// Population size NP (at least 4). Default 40.
+    pub population: usize,
+    /// Differential weight F, in (0, 2]. Default 0.5.
+    pub f: f64,
+    /// Crossover rate CR, in [0, 1]. Default 0.9.
+    pub cr: f64,
+}
+
+impl Default for DeParams {
+    fn default() -> Self {
+        Self { population: 40, f: 0.5, cr: 0.9 }
+    }
+}
+
+impl DeParams {
+    /// Rejects values the algorithm cannot run with.
+    pub fn check(&self) -> Result<()> {
+        if self.population < 4 {
+            return Err(Error::input(
+                "planner.params.population",
+                format!("must be at least 4, got {}", self.population),
+            ));
+        }
+        if !(self.f.is_finite() && self.f > 0.0 && self.f <= 2.0) {
+            return Err(Error::input("planner.params.f", format!("must be in (0, 2], got {}", self.f)));
+        }
+        if !(0.0..=1.0).contains(&self.cr) {
+            return Err(Error::input("planner.params.cr", format!("must be in [0, 1], got {}", self.cr)));
+        }
+        Ok(())
+    }
+}
+
+/// DE/rand/1/bin. Construct with [`De::new`]; the parameters should pass [`DeParams::check`].
+#[derive(Clone, Debug)]
+pub struct De {
+    params: DeParams,
+    x: Population,
+    cost: Vec<f64>,
+    trial: Population,
+    trial_cost: Vec<f64>,
+}
+
+impl De {
+    pub fn new(params: DeParams) -> Self {
+        Self {
+            params,
+            x: Population::zeros(0, 0),
+            cost: Vec::new(),
+            trial: Population::zeros(0, 0),
+            trial_cost: Vec::new(),
+        }
+    }
+
+    pub fn params(&self) -> &DeParams {
+        &self.params
+    }
+}
+
+/// The bound rule for one mutant component: inside the box it is kept; below `lo` it becomes
+/// `(parent + lo) / 2`, above `hi` it becomes `(parent + hi) / 2`.
+pub fn bounce_to_midpoint(mutant: f64, parent: f64, lo: f64, hi: f64) -> f64 {
+    if mutant < lo {
+        0.5 * (parent + lo)
+    } else if mutant > hi {
+        0.5 * (parent + hi)
+    } else {
+        mutant
+    }
+}
+
+impl Optimizer for De {
+    fn id(&self) -> &'static str {
+        "de"
+    }
+
+    fn init(&mut self, ctx: &mut Context<'_>) {
+        let n = self.params.population;
+        self.x = Population::uniform(n, ctx);
+        for i in 0..n {
+            ctx.repair(self.x.row_mut(i));
+        }
+        self.cost = vec![f64::INFINITY; n];
+        ctx.evaluate_population(&self.x, &mut self.cost);
+        self.trial = self.x.clone();
+        self.trial_cost = vec![f64::INFINITY; n];
+    }
+
+    fn step(&mut self, ctx: &mut Context<'_>) {
+        let n = self.x.len();
+        let dim = self.x.dim();
+        let (f, cr) = (self.params.f, self.params.cr);
+        for i in 0..n {
+            let r1 = loop {
+                let r = ctx.rng().random_range(0..n);
+                if r != i {
+                    break r;
+                }
+            };
+            let r2 = loop {
+                let r = ctx.rng().random_range(0..n);
+                if r != i && r != r1 {
+                    break r;
+                }
+            };
+            let r3 = loop {
+                let r = ctx.rng().random_range(0..n);
+                if r != i && r != r1 && r != r2 {
+                    break r;
+                }
+            };
+            let jrand = ctx.rng().random_range(0..dim.max(1));
+            for j in 0..dim {
+                let u: f64 = ctx.rng().random();
+                let parent = self.x.row(i)[j];
+                let value = if u < cr || j == jrand {
+                    let mutant = self.x.row(r1)[j] + f * (self.x.row(r2)[j] - self.x.row(r3)[j]);
+                    bounce_to_midpoint(mutant, parent, ctx.lower()[j], ctx.upper()[j])
+                } else {
+                    parent
+                };
+                self.trial.row_mut(i)[j] = value;
+            }
+            ctx.repair(self.trial.row_mut(i));
+        }
+        ctx.evaluate_population(&self.trial, &mut self.trial_cost);
+        for i in 0..n {
+            if self.trial_cost[i] <= self.cost[i] {
+                self.cost[i] = self.trial_cost[i];
+                self.x.copy_row_from(i, &self.trial, i);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::optim::functions::{Function, FunctionObjective};
+    use crate::optim::{run, Budget};
+
+    #[test]
+    fn defaults_and_check() {
+        let p = DeParams::default();
+        assert_eq!((p.population, p.f, p.cr), (40, 0.5, 0.9));
+        assert!(p.check().is_ok());
+        for bad in [
+            DeParams { population: 3, ..p.clone() },
+            DeParams { f: 0.0, ..p.clone() },
+            DeParams { f: f64::NAN, ..p.clone() },
+            DeParams { f: 2.5, ..p.clone() },
+            DeParams { cr: -0.1, ..p.clone() },
+            DeParams { cr: f64::NAN, ..p.clone() },
+        ] {
+            let e = bad.check().unwrap_err().to_string();
+            assert!(e.starts_with("planner.params."), "{e}");
+        }
+        let q: DeParams = serde_json::from_str(r#"{"cr": 0.3}"#).unwrap();
+        assert_eq!(q, DeParams { cr: 0.3, ..DeParams::default() });
+        assert!(serde_json::from_str::<DeParams>(r#"{"F": 0.3}"#).is_err());
+    }
+
+    #[test]
+    fn bound_rule_is_midpoint_to_violated_bound() {
+        assert_eq!(bounce_to_midpoint(-7.0, 1.0, -5.0, 5.0), -2.0);
+        assert_eq!(bounce_to_midpoint(9.0, 1.0, -5.0, 5.0), 3.0);
+        assert_eq!(bounce_to_midpoint(4.0, 1.0, -5.0, 5.0), 4.0);
+    }
+
+    #[test]
+    fn converges_on_sphere_and_never_worsens() {
+        let obj = FunctionObjective::new(Function::Sphere, 5, -5.12, 5.12);
+        let mut de = De::new(DeParams::default());
+        let r = run(&mut de, &obj, &Budget::iterations(200), crate::rng::run_rng(1, 0), false, &mut |_| {});
+        assert!(r.best_cost < 1e-8, "{}", r.best_cost);
+        assert!(de.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
+        let min = de.cost.iter().copied().fold(f64::INFINITY, f64::min);
+        assert_eq!(min, r.best_cost);
+    }
+}

@@ -1,1 +1,533 @@
-//! placeholder: written by the optimizer helper
+//! Genetic algorithm with roulette-wheel selection, in two codings.
+//!
+//! The skeleton is Holland's / Goldberg's simple GA (Goldberg, "Genetic Algorithms in Search,
+//! Optimization and Machine Learning", 1989, ch. 3): fitness-proportionate (roulette) selection
+//! of parent pairs, crossover with probability `pc`, mutation, generational replacement, plus
+//! elitism. The two codings reproduce the GA baselines of the seed papers (`ALGORITHMS.md`
+//! sections 1.7 and 3.1):
+//!
+//! * `coding = "real"` — seed 000 (Zhang et al. 2017, Table 3: pc = 0.8, roulette, "random
+//!   multi-point crossover"; the rest is Chosen in section 1.7): population 50, two-point
+//!   crossover with probability 0.8, each gene mutated with probability 1/D by a Gaussian step
+//!   `N(0, (0.1 x range)^2)`, then clamped to the box.
+//! * `coding = "binary"` — seed 002 (Liu et al. 2015, section 5): 20 bits per variable, roulette,
+//!   single-point crossover over the whole chromosome with pc = 0.6, bit-flip mutation with
+//!   probability pm = 1/D applied to every bit (D = number of variables; "per bit" is Chosen in
+//!   section 3.1), population 40. Variable `v` decodes as
+//!   `x_v = lo_v + (hi_v - lo_v) k_v / (2^bits - 1)`, `k_v` the plain (not Gray) binary integer
+//!   of its bits, most significant bit first in the chromosome.
+//!
+//! Choices, documented again next to the code:
+//! * Roulette for minimisation: `fitness_i = 1 / (1 + f_i - f_min)` with `f_min` the best cost
+//!   of the current population, so the best individual has fitness 1 and the weights do not
+//!   depend on the sign of the cost. A +inf (or NaN) cost has fitness 0; if every fitness is 0
+//!   the parent is drawn uniformly.
+//! * Elitism: the `elitism` best individuals (default 1) are copied unchanged into the next
+//!   generation and are not re-evaluated; the other `population - elitism` are offspring, so a
+//!   generation costs `population - elitism` evaluations.
+//! * Parents are drawn with replacement (a parent may mate with itself). Each pair gives two
+//!   children; the second child of the last pair is dropped when the count is odd.
+//! * Two-point crossover (real): two distinct cut points among the `D - 1` gene boundaries; the
+//!   genes between them are swapped. With `D = 2` it is one-point crossover; with `D = 1`
+//!   crossover does nothing.
+//! * Binary coding is Baldwinian: the chromosome is kept as is; the point evaluated (and
+//!   reported) is its decoding after the objective's repair.
+//! * Random draws per generation, in order: for each pair, parent a, parent b, the crossover
+//!   test, the cut point(s) if crossing, then the mutation draws of child 1 and of child 2 (one
+//!   U(0,1) per gene or bit, plus one standard normal after each real-coded hit).
+
+use rand::Rng as _;
+use rand_distr::StandardNormal;
+
+use super::{Context, Optimizer, Population};
+use crate::error::{Error, Result};
+use crate::rng::Rng;
+
+/// How a GA individual is coded.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum GaCoding {
+    /// Real-valued genes (seed 000).
+    #[default]
+    Real,
+    /// `bits` bits per variable (seed 002).
+    Binary,
+}
+
+/// GA parameters. Defaults: seed 000's real-coded GA.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct GaParams {
+    /// `"real"` (default) or `"binary"`.
+    pub coding: GaCoding,
+    /// Population size (at least 2). Default 50.
+    pub population: usize,
+    /// Probability that a parent pair is crossed, in [0, 1]. Default 0.8.
+    pub crossover_rate: f64,
+    /// Mutation probability per gene (real) or per bit (binary), in [0, 1]. `None` (default):
+    /// 1/D with D the number of variables.
+    pub mutation_rate: Option<f64>,
+    /// Bits per variable for the binary coding, 1 to 52. Default 20. Ignored by the real coding.
+    pub bits: u32,
+    /// Number of best individuals copied unchanged, below `population`. Default 1.
+    pub elitism: usize,
+    /// Gaussian mutation step as a fraction of the box width (real coding). Default 0.1.
+    pub sigma_fraction: f64,
+}
+
+impl Default for GaParams {
+    fn default() -> Self {
+        Self::seed000()
+    }
+}
+
+impl GaParams {
+    /// Seed 000 (section 1.7 reading): real coding, 50 individuals, two-point crossover with
+    /// pc = 0.8, Gaussian mutation with probability 1/D and sigma = 0.1 x range, elitism 1.
+    pub fn seed000() -> Self {
+        Self {
+            coding: GaCoding::Real,
+            population: 50,
+            crossover_rate: 0.8,
+            mutation_rate: None,
+            bits: 20,
+            elitism: 1,
+            sigma_fraction: 0.1,
+        }
+    }
+
+    /// Seed 002: binary coding with 20 bits per variable, 40 individuals, single-point
+    /// crossover with pc = 0.6, bit-flip mutation with pm = 1/D per bit, elitism 1 (Chosen).
+    pub fn seed002() -> Self {
+        Self {
+            coding: GaCoding::Binary,
+            population: 40,
+            crossover_rate: 0.6,
+            mutation_rate: None,
+            bits: 20,
+            elitism: 1,
+            sigma_fraction: 0.1,
+        }
+    }
+
+    /// Rejects values the algorithm cannot run with.
+    pub fn check(&self) -> Result<()> {
+        if self.population < 2 {
+            return Err(Error::input(
+                "planner.params.population",
+                format!("must be at least 2, got {}", self.population),
+            ));
+        }
+        if !(0.0..=1.0).contains(&self.crossover_rate) {
+            return Err(Error::input(
+                "planner.params.crossover_rate",
+                format!("must be in [0, 1], got {}", self.crossover_rate),
+            ));
+        }
+        if let Some(pm) = self.mutation_rate {
+            if !(0.0..=1.0).contains(&pm) {
+                return Err(Error::input("planner.params.mutation_rate", format!("must be in [0, 1], got {pm}")));
+            }
+        }
+        if !(1..=52).contains(&self.bits) {
+            return Err(Error::input("planner.params.bits", format!("must be in 1..=52, got {}", self.bits)));
+        }
+        if self.elitism >= self.population {
+            return Err(Error::input(
+                "planner.params.elitism",
+                format!("must be below population ({}), got {}", self.population, self.elitism),
+            ));
+        }
+        if !(self.sigma_fraction.is_finite() && self.sigma_fraction >= 0.0) {
+            return Err(Error::input(
+                "planner.params.sigma_fraction",
+                format!("must be finite and >= 0, got {}", self.sigma_fraction),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Roulette weights for minimisation: `1 / (1 + f_i - f_min)` with `f_min` the lowest cost in
+/// `costs`; +inf and NaN costs get 0 (as does any cost whose difference to `f_min` overflows).
+/// Never produces NaN.
+pub fn roulette_fitness(costs: &[f64], out: &mut [f64]) {
+    let f_min = costs.iter().copied().filter(|c| !c.is_nan()).fold(f64::INFINITY, f64::min);
+    for (o, &c) in out.iter_mut().zip(costs) {
+        *o = if c.is_nan() || c == f64::INFINITY {
+            0.0
+        } else if c == f_min {
+            1.0
+        } else {
+            // f_min is finite or -inf here; c > f_min, so the denominator is > 1 or +inf.
+            1.0 / (1.0 + (c - f_min))
+        };
+    }
+}
+
+/// One spin of the wheel given cumulative weights `cum` (non-decreasing, last = total).
+/// A zero total picks uniformly. Draws exactly one number from `rng`.
+fn spin(cum: &[f64], rng: &mut Rng) -> usize {
+    let n = cum.len();
+    let total = cum[n - 1];
+    if total > 0.0 && total.is_finite() {
+        let u = rng.random::<f64>() * total;
+        let i = cum.partition_point(|&c| c <= u);
+        if i < n {
+            i
+        } else {
+            // u rounded up to the total: take the last individual with positive weight.
+            cum.iter().rposition(|&c| c < total).map_or(0, |k| k + 1).min(n - 1)
+        }
+    } else {
+        rng.random_range(0..n)
+    }
+}
+
+/// Decodes a `bits`-bit integer to `[lo, hi]`.
+pub fn decode(k: u64, bits: u32, lo: f64, hi: f64) -> f64 {
+    let full = ((1u64 << bits) - 1) as f64;
+    lo + (hi - lo) * (k as f64 / full)
+}
+
+/// Single-point crossover of two chromosomes of `bits`-bit words (most significant bit first)
+/// at bit position `cut` (bits `< cut` come from the first parent).
+fn one_point_bits(a: &mut [u64], b: &mut [u64], bits: u32, cut: usize) {
+    let bits_us = bits as usize;
+    let full = (1u64 << bits) - 1;
+    for v in 0..a.len() {
+        let start = v * bits_us;
+        if start + bits_us <= cut {
+            continue;
+        }
+        if start >= cut {
+            std::mem::swap(&mut a[v], &mut b[v]);
+            continue;
+        }
+        // The top `cut - start` bits stay, the rest are exchanged.
+        let low = (1u64 << (bits_us - (cut - start))) - 1;
+        let hi_mask = full & !low;
+        let (na, nb) = ((a[v] & hi_mask) | (b[v] & low), (b[v] & hi_mask) | (a[v] & low));
+        a[v] = na;
+        b[v] = nb;
+    }
+}
+
+/// The genetic algorithm. Construct with [`Ga::new`]; the parameters should pass
+/// [`GaParams::check`].
+#[derive(Clone, Debug)]
+pub struct Ga {
+    params: GaParams,
+    pm: f64,
+    sigma: Vec<f64>,
+    /// Phenotypes (the evaluated points) and their costs.
+    x: Population,
+    cost: Vec<f64>,
+    /// Binary chromosomes, `dim` words per individual (empty for the real coding).
+    chrom: Vec<u64>,
+    next_x: Population,
+    next_cost: Vec<f64>,
+    next_chrom: Vec<u64>,
+    off_x: Population,
+    off_cost: Vec<f64>,
+    off_chrom: Vec<u64>,
+    order: Vec<usize>,
+    cum: Vec<f64>,
+    ca: Vec<f64>,
+    cb: Vec<f64>,
+    ka: Vec<u64>,
+    kb: Vec<u64>,
+}
+
+impl Ga {
+    pub fn new(params: GaParams) -> Self {
+        Self {
+            params,
+            pm: 0.0,
+            sigma: Vec::new(),
+            x: Population::zeros(0, 0),
+            cost: Vec::new(),
+            chrom: Vec::new(),
+            next_x: Population::zeros(0, 0),
+            next_cost: Vec::new(),
+            next_chrom: Vec::new(),
+            off_x: Population::zeros(0, 0),
+            off_cost: Vec::new(),
+            off_chrom: Vec::new(),
+            order: Vec::new(),
+            cum: Vec::new(),
+            ca: Vec::new(),
+            cb: Vec::new(),
+            ka: Vec::new(),
+            kb: Vec::new(),
+        }
+    }
+
+    pub fn params(&self) -> &GaParams {
+        &self.params
+    }
+
+    fn binary(&self) -> bool {
+        self.params.coding == GaCoding::Binary
+    }
+
+    /// Gaussian mutation of a real-coded child, then clamp to the box.
+    fn mutate_real(child: &mut [f64], pm: f64, sigma: &[f64], ctx: &mut Context<'_>) {
+        for (d, g) in child.iter_mut().enumerate() {
+            let u: f64 = ctx.rng().random();
+            if u < pm {
+                let z: f64 = ctx.rng().sample(StandardNormal);
+                *g = (*g + sigma[d] * z).clamp(ctx.lower()[d], ctx.upper()[d]);
+            }
+        }
+    }
+
+    /// Bit-flip mutation: one U(0,1) per bit, most significant bit of variable 0 first.
+    fn mutate_bits(child: &mut [u64], pm: f64, bits: u32, rng: &mut Rng) {
+        for word in child.iter_mut() {
+            for j in (0..bits).rev() {
+                let u: f64 = rng.random();
+                if u < pm {
+                    *word ^= 1u64 << j;
+                }
+            }
+        }
+    }
+
+    /// Writes the repaired decoding of `chrom` into `x`.
+    fn decode_into(chrom: &[u64], bits: u32, x: &mut [f64], ctx: &Context<'_>) {
+        for (d, (xv, &k)) in x.iter_mut().zip(chrom).enumerate() {
+            *xv = decode(k, bits, ctx.lower()[d], ctx.upper()[d]);
+        }
+        ctx.repair(x);
+    }
+}
+
+impl Optimizer for Ga {
+    fn id(&self) -> &'static str {
+        "ga"
+    }
+
+    fn init(&mut self, ctx: &mut Context<'_>) {
+        let n = self.params.population;
+        let dim = ctx.dim();
+        let m = n - self.params.elitism.min(n - 1);
+        self.pm = self.params.mutation_rate.unwrap_or(1.0 / dim.max(1) as f64);
+        self.sigma = (0..dim).map(|d| self.params.sigma_fraction * ctx.range(d)).collect();
+        if self.binary() {
+            let bits = self.params.bits;
+            let full = (1u64 << bits) - 1;
+            self.chrom = (0..n * dim).map(|_| ctx.rng().random::<u64>() & full).collect();
+            self.x = Population::zeros(n, dim);
+            for i in 0..n {
+                Self::decode_into(&self.chrom[i * dim..(i + 1) * dim], bits, self.x.row_mut(i), ctx);
+            }
+            self.next_chrom = vec![0; n * dim];
+            self.off_chrom = vec![0; m * dim];
+            self.ka = vec![0; dim];
+            self.kb = vec![0; dim];
+        } else {
+            self.x = Population::uniform(n, ctx);
+            for i in 0..n {
+                ctx.repair(self.x.row_mut(i));
+            }
+        }
+        self.cost = vec![f64::INFINITY; n];
+        ctx.evaluate_population(&self.x, &mut self.cost);
+        self.next_x = Population::zeros(n, dim);
+        self.next_cost = vec![f64::INFINITY; n];
+        self.off_x = Population::zeros(m, dim);
+        self.off_cost = vec![f64::INFINITY; m];
+        self.order = (0..n).collect();
+        self.cum = vec![0.0; n];
+        self.ca = vec![0.0; dim];
+        self.cb = vec![0.0; dim];
+    }
+
+    fn step(&mut self, ctx: &mut Context<'_>) {
+        let n = self.x.len();
+        let dim = self.x.dim();
+        let elites = self.params.elitism.min(n - 1);
+        let m = n - elites;
+        let bits = self.params.bits;
+        let pc = self.params.crossover_rate;
+        let pm = self.pm;
+        let binary = self.binary();
+
+        // Rank (NaN last, ties keep the lower index) for elitism.
+        let cost = &self.cost;
+        let key = |i: usize| if cost[i].is_nan() { f64::INFINITY } else { cost[i] };
+        self.order.sort_by(|&a, &b| key(a).total_cmp(&key(b)));
+
+        // Roulette weights (see `roulette_fitness`), accumulated in place.
+        roulette_fitness(&self.cost, &mut self.cum);
+        let mut acc = 0.0;
+        for c in &mut self.cum {
+            acc += *c;
+            *c = acc;
+        }
+
+        // Offspring: pairs of roulette-selected parents, crossover, mutation, repair.
+        let mut k = 0;
+        while k < m {
+            let a = spin(&self.cum, ctx.rng());
+            let b = spin(&self.cum, ctx.rng());
+            let cross = ctx.rng().random::<f64>() < pc;
+            let second = k + 1 < m;
+            if binary {
+                self.ka.copy_from_slice(&self.chrom[a * dim..(a + 1) * dim]);
+                self.kb.copy_from_slice(&self.chrom[b * dim..(b + 1) * dim]);
+                let len = dim * bits as usize;
+                if cross && len >= 2 {
+                    let cut = ctx.rng().random_range(1..len);
+                    one_point_bits(&mut self.ka, &mut self.kb, bits, cut);
+                }
+                Self::mutate_bits(&mut self.ka, pm, bits, ctx.rng());
+                self.off_chrom[k * dim..(k + 1) * dim].copy_from_slice(&self.ka);
+                Self::decode_into(&self.ka, bits, self.off_x.row_mut(k), ctx);
+                if second {
+                    Self::mutate_bits(&mut self.kb, pm, bits, ctx.rng());
+                    self.off_chrom[(k + 1) * dim..(k + 2) * dim].copy_from_slice(&self.kb);
+                    Self::decode_into(&self.kb, bits, self.off_x.row_mut(k + 1), ctx);
+                }
+            } else {
+                self.ca.copy_from_slice(self.x.row(a));
+                self.cb.copy_from_slice(self.x.row(b));
+                if cross && dim >= 2 {
+                    // Two distinct cut points among the D - 1 gene boundaries 1..D.
+                    let (lo, hi) = if dim == 2 {
+                        (1, 2)
+                    } else {
+                        let p = ctx.rng().random_range(1..dim);
+                        let mut q = ctx.rng().random_range(1..dim - 1);
+                        if q >= p {
+                            q += 1;
+                        }
+                        (p.min(q), p.max(q))
+                    };
+                    self.ca[lo..hi].swap_with_slice(&mut self.cb[lo..hi]);
+                }
+                Self::mutate_real(&mut self.ca, pm, &self.sigma, ctx);
+                ctx.repair(&mut self.ca);
+                self.off_x.row_mut(k).copy_from_slice(&self.ca);
+                if second {
+                    Self::mutate_real(&mut self.cb, pm, &self.sigma, ctx);
+                    ctx.repair(&mut self.cb);
+                    self.off_x.row_mut(k + 1).copy_from_slice(&self.cb);
+                }
+            }
+            k += 2;
+        }
+
+        ctx.evaluate_population(&self.off_x, &mut self.off_cost);
+
+        // Next generation: the elites unchanged (not re-evaluated), then the offspring.
+        for (slot, &e) in self.order[..elites].iter().enumerate() {
+            self.next_x.copy_row_from(slot, &self.x, e);
+            self.next_cost[slot] = self.cost[e];
+            if binary {
+                self.next_chrom[slot * dim..(slot + 1) * dim].copy_from_slice(&self.chrom[e * dim..(e + 1) * dim]);
+            }
+        }
+        for j in 0..m {
+            self.next_x.copy_row_from(elites + j, &self.off_x, j);
+            self.next_cost[elites + j] = self.off_cost[j];
+        }
+        if binary {
+            self.next_chrom[elites * dim..].copy_from_slice(&self.off_chrom);
+        }
+        std::mem::swap(&mut self.x, &mut self.next_x);
+        std::mem::swap(&mut self.cost, &mut self.next_cost);
+        std::mem::swap(&mut self.chrom, &mut self.next_chrom);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::optim::functions::{Function, FunctionObjective};
+    use crate::optim::{run, Budget};
+    use rand::SeedableRng;
+
+    #[test]
+    fn defaults_presets_and_check() {
+        let p = GaParams::default();
+        assert_eq!(p, GaParams::seed000());
+        assert_eq!(
+            (p.coding, p.population, p.crossover_rate, p.mutation_rate, p.bits, p.elitism, p.sigma_fraction),
+            (GaCoding::Real, 50, 0.8, None, 20, 1, 0.1)
+        );
+        let q = GaParams::seed002();
+        assert_eq!((q.coding, q.population, q.crossover_rate, q.bits), (GaCoding::Binary, 40, 0.6, 20));
+        assert!(p.check().is_ok() && q.check().is_ok());
+        for bad in [
+            GaParams { population: 1, elitism: 0, ..p.clone() },
+            GaParams { crossover_rate: 1.5, ..p.clone() },
+            GaParams { crossover_rate: f64::NAN, ..p.clone() },
+            GaParams { mutation_rate: Some(-0.1), ..p.clone() },
+            GaParams { bits: 0, ..p.clone() },
+            GaParams { bits: 53, ..p.clone() },
+            GaParams { elitism: 50, ..p.clone() },
+            GaParams { sigma_fraction: f64::INFINITY, ..p.clone() },
+        ] {
+            let e = bad.check().unwrap_err().to_string();
+            assert!(e.starts_with("planner.params."), "{e}");
+        }
+    }
+
+    #[test]
+    fn serde_coding_names() {
+        let p: GaParams = serde_json::from_str(r#"{"coding": "binary", "bits": 12}"#).unwrap();
+        assert_eq!(p, GaParams { coding: GaCoding::Binary, bits: 12, ..GaParams::default() });
+        assert!(serde_json::from_str::<GaParams>(r#"{"coding": "gray"}"#).is_err());
+        assert!(serde_json::from_str::<GaParams>(r#"{"pc": 0.5}"#).is_err());
+    }
+
+    #[test]
+    fn roulette_handles_infinities() {
+        let mut w = [0.0; 4];
+        roulette_fitness(&[3.0, 1.0, f64::INFINITY, 2.0], &mut w);
+        assert_eq!(w, [1.0 / 3.0, 1.0, 0.0, 0.5]);
+        roulette_fitness(&[f64::INFINITY; 4], &mut w);
+        assert_eq!(w, [0.0; 4]);
+        roulette_fitness(&[-1e308, 1e308, f64::NAN, -1e308], &mut w);
+        assert_eq!(w, [1.0, 0.0, 0.0, 1.0]);
+        // All-zero weights pick uniformly; zero-weight individuals are never picked otherwise.
+        let mut rng = crate::rng::Rng::seed_from_u64(5);
+        let picks: Vec<usize> = (0..200).map(|_| spin(&[0.0, 0.0, 0.0], &mut rng)).collect();
+        assert!((0..3).all(|i| picks.contains(&i)));
+        assert!((0..200).all(|_| spin(&[0.0, 1.0, 1.0, 2.0], &mut rng) != 0 && spin(&[1.0, 1.0, 2.0], &mut rng) != 1));
+    }
+
+    #[test]
+    fn binary_decode_and_crossover() {
+        assert_eq!(decode(0, 20, -5.0, 5.0), -5.0);
+        assert_eq!(decode((1 << 20) - 1, 20, -5.0, 5.0), 5.0);
+        assert_eq!(decode(2, 2, 0.0, 3.0), 2.0);
+        // 3 variables of 4 bits, cut after 6 bits: variable 0 and the top 2 bits of variable 1
+        // come from the first parent.
+        let mut a = [0b1111, 0b1111, 0b1111];
+        let mut b = [0b0000, 0b0000, 0b0000];
+        one_point_bits(&mut a, &mut b, 4, 6);
+        assert_eq!(a, [0b1111, 0b1100, 0b0000]);
+        assert_eq!(b, [0b0000, 0b0011, 0b1111]);
+        let mut a = [0b1010u64];
+        let mut b = [0b0101u64];
+        one_point_bits(&mut a, &mut b, 4, 4);
+        assert_eq!((a, b), ([0b1010], [0b0101]));
+    }
+
+    #[test]
+    fn both_codings_improve_and_keep_the_elite() {
+        for params in [GaParams::seed000(), GaParams::seed002()] {
+            let obj = FunctionObjective::new(Function::Sphere, 4, -5.12, 5.12);
+            let mut ga = Ga::new(params.clone());
+            let r = run(&mut ga, &obj, &Budget::iterations(100), crate::rng::run_rng(2, 0), false, &mut |_| {});
+            assert!(r.best_cost < 0.1, "{:?}: {}", params.coding, r.best_cost);
+            // Elitism: the population still holds the best point seen.
+            let min = ga.cost.iter().copied().fold(f64::INFINITY, f64::min);
+            assert_eq!(min, r.best_cost, "{:?}", params.coding);
+            assert!(ga.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
+        }
+    }
+}

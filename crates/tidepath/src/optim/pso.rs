@@ -1,1 +1,340 @@
-//! placeholder: written by the optimizer helper
+//! Particle swarm optimisation with inertia weight.
+//!
+//! Follows Shi & Eberhart, "A modified particle swarm optimizer" (IEEE ICEC 1998), the
+//! global-best (gbest) form with inertia weight:
+//!
+//! ```text
+//! v_id <- w v_id + c1 r1 (p_id - x_id) + c2 r2 (g_d - x_id)     r1, r2 ~ U(0,1), per dimension
+//! v_id <- clamp(v_id, -vmax_d, vmax_d)                            vmax_d = vmax_fraction * range_d
+//! x_id <- x_id + v_id
+//! ```
+//!
+//! with `w` decreasing linearly from `w_start` to `w_end` over `w_schedule_iterations`
+//! iterations (Shi & Eberhart 1999, "Empirical study of particle swarm optimization"), or
+//! constant when no schedule is given.
+//!
+//! Parameter sets of the seed papers (`ALGORITHMS.md` sections 1.7, 3.1 and 4.5):
+//! * seed 000 (Zhang et al. 2017, Table 3): w = 0.7, c1 = c2 = 2, 50 particles, vmax = range;
+//! * seed 002 (Liu et al. 2015, section 5, after Li et al.): w = 0.729, c1 = c2 = 1.494,
+//!   vmax = range, 40 particles (the defaults);
+//! * seed 003 (Guo et al., baselines): w 0.9 -> 0.4 linearly, c1 = c2 = 2, vmax = 0.2 x range,
+//!   45 particles.
+//!
+//! Choices (not fixed by the papers):
+//! * Synchronous update: the whole swarm moves with the global best of the previous iteration,
+//!   then is evaluated as one population; personal and global bests are updated afterwards.
+//! * A coordinate that leaves the box is clamped to the bound and its velocity component set to
+//!   zero ("absorbing wall"); then the objective's own repair runs.
+//! * Personal bests improve only on a strictly lower cost, so an evaluation past the budget
+//!   (+inf) never replaces anything. Global-best ties keep the lower particle index.
+//! * Inertia at iteration `k = 1, 2, ...`: `w = w_start + (w_end - w_start) min(k / T, 1)`
+//!   with `T = w_schedule_iterations`, so the last scheduled iteration uses exactly `w_end`.
+
+use rand::Rng as _;
+
+use super::{Context, Optimizer, Population};
+use crate::error::{Error, Result};
+
+/// PSO parameters. Defaults: seed 002's set (see the module documentation).
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct PsoParams {
+    /// Number of particles. Default 40.
+    pub population: usize,
+    /// Inertia weight at the start of the run. Default 0.729.
+    pub w_start: f64,
+    /// Inertia weight reached after `w_schedule_iterations` iterations. Default 0.729.
+    pub w_end: f64,
+    /// Length of the linear inertia schedule in iterations. `None` (default): constant
+    /// `w_start`, which requires `w_end == w_start`.
+    pub w_schedule_iterations: Option<u64>,
+    /// Cognitive coefficient. Default 1.494.
+    pub c1: f64,
+    /// Social coefficient. Default 1.494.
+    pub c2: f64,
+    /// Velocity clamp as a fraction of the box width, per dimension. Default 1.0.
+    pub vmax_fraction: f64,
+}
+
+impl Default for PsoParams {
+    fn default() -> Self {
+        Self::seed002()
+    }
+}
+
+impl PsoParams {
+    /// Seed 000 (Zhang et al. 2017, Table 3): w = 0.7, c1 = c2 = 2, 50 particles, vmax = range.
+    pub fn seed000() -> Self {
+        Self {
+            population: 50,
+            w_start: 0.7,
+            w_end: 0.7,
+            w_schedule_iterations: None,
+            c1: 2.0,
+            c2: 2.0,
+            vmax_fraction: 1.0,
+        }
+    }
+
+    /// Seed 002 (Liu et al. 2015, section 5): w = 0.729, c1 = c2 = 1.494, 40 particles,
+    /// vmax = range. The default.
+    pub fn seed002() -> Self {
+        Self {
+            population: 40,
+            w_start: 0.729,
+            w_end: 0.729,
+            w_schedule_iterations: None,
+            c1: 1.494,
+            c2: 1.494,
+            vmax_fraction: 1.0,
+        }
+    }
+
+    /// Seed 003's baseline (Guo et al.): w 0.9 -> 0.4 linearly over `iterations`, c1 = c2 = 2,
+    /// vmax = 0.2 x range, 45 particles.
+    pub fn seed003(iterations: u64) -> Self {
+        Self {
+            population: 45,
+            w_start: 0.9,
+            w_end: 0.4,
+            w_schedule_iterations: Some(iterations),
+            c1: 2.0,
+            c2: 2.0,
+            vmax_fraction: 0.2,
+        }
+    }
+
+    /// Rejects values the algorithm cannot run with.
+    pub fn check(&self) -> Result<()> {
+        if self.population < 2 {
+            return Err(Error::input(
+                "planner.params.population",
+                format!("must be at least 2, got {}", self.population),
+            ));
+        }
+        for (name, v) in [("w_start", self.w_start), ("w_end", self.w_end), ("c1", self.c1), ("c2", self.c2)] {
+            if !v.is_finite() {
+                return Err(Error::input(format!("planner.params.{name}"), format!("must be finite, got {v}")));
+            }
+        }
+        for (name, v) in [("c1", self.c1), ("c2", self.c2)] {
+            if v < 0.0 {
+                return Err(Error::input(format!("planner.params.{name}"), format!("must be >= 0, got {v}")));
+            }
+        }
+        if !(self.vmax_fraction.is_finite() && self.vmax_fraction > 0.0) {
+            return Err(Error::input(
+                "planner.params.vmax_fraction",
+                format!("must be finite and > 0, got {}", self.vmax_fraction),
+            ));
+        }
+        match self.w_schedule_iterations {
+            Some(0) => {
+                return Err(Error::input("planner.params.w_schedule_iterations", "must be at least 1, got 0"));
+            }
+            None if self.w_end != self.w_start => {
+                return Err(Error::input(
+                    "planner.params.w_end",
+                    format!(
+                        "must equal w_start ({}) when w_schedule_iterations is not set, got {}; set \
+                         w_schedule_iterations for a linear schedule",
+                        self.w_start, self.w_end
+                    ),
+                ));
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// Inertia weight used in iteration `k` (1-based).
+    pub fn inertia(&self, k: u64) -> f64 {
+        match self.w_schedule_iterations {
+            Some(t) if t > 0 => {
+                let frac = (k as f64 / t as f64).min(1.0);
+                self.w_start + (self.w_end - self.w_start) * frac
+            }
+            _ => self.w_start,
+        }
+    }
+}
+
+/// Inertia-weight PSO. Construct with [`Pso::new`]; the parameters should pass
+/// [`PsoParams::check`].
+#[derive(Clone, Debug)]
+pub struct Pso {
+    params: PsoParams,
+    x: Population,
+    v: Vec<f64>,
+    cost: Vec<f64>,
+    pbest: Population,
+    pbest_cost: Vec<f64>,
+    gbest: Vec<f64>,
+    gbest_cost: f64,
+    vmax: Vec<f64>,
+    iteration: u64,
+}
+
+impl Pso {
+    pub fn new(params: PsoParams) -> Self {
+        Self {
+            params,
+            x: Population::zeros(0, 0),
+            v: Vec::new(),
+            cost: Vec::new(),
+            pbest: Population::zeros(0, 0),
+            pbest_cost: Vec::new(),
+            gbest: Vec::new(),
+            gbest_cost: f64::INFINITY,
+            vmax: Vec::new(),
+            iteration: 0,
+        }
+    }
+
+    pub fn params(&self) -> &PsoParams {
+        &self.params
+    }
+
+    /// Personal and global best update after an evaluation of `self.x`.
+    fn update_bests(&mut self) {
+        for i in 0..self.x.len() {
+            if self.cost[i] < self.pbest_cost[i] {
+                self.pbest_cost[i] = self.cost[i];
+                self.pbest.copy_row_from(i, &self.x, i);
+            }
+        }
+        let mut g = None;
+        for i in 0..self.pbest_cost.len() {
+            if self.pbest_cost[i] < self.gbest_cost {
+                self.gbest_cost = self.pbest_cost[i];
+                g = Some(i);
+            }
+        }
+        if let Some(g) = g {
+            self.gbest.copy_from_slice(self.pbest.row(g));
+        }
+    }
+}
+
+impl Optimizer for Pso {
+    fn id(&self) -> &'static str {
+        "pso"
+    }
+
+    fn init(&mut self, ctx: &mut Context<'_>) {
+        let n = self.params.population;
+        let dim = ctx.dim();
+        self.vmax = (0..dim).map(|d| self.params.vmax_fraction * ctx.range(d)).collect();
+        // Random draws: positions (point by point), then velocities (point by point).
+        self.x = Population::uniform(n, ctx);
+        self.v = vec![0.0; n * dim];
+        for i in 0..n {
+            for d in 0..dim {
+                let u: f64 = ctx.rng().random();
+                self.v[i * dim + d] = (2.0 * u - 1.0) * self.vmax[d];
+            }
+        }
+        for i in 0..n {
+            ctx.repair(self.x.row_mut(i));
+        }
+        self.cost = vec![f64::INFINITY; n];
+        ctx.evaluate_population(&self.x, &mut self.cost);
+        self.pbest = self.x.clone();
+        self.pbest_cost = self.cost.clone();
+        // Index 0 is the global best until a finite cost beats +inf.
+        self.gbest = self.x.row(0).to_vec();
+        self.gbest_cost = f64::INFINITY;
+        self.update_bests();
+        self.iteration = 0;
+    }
+
+    fn step(&mut self, ctx: &mut Context<'_>) {
+        self.iteration += 1;
+        let w = self.params.inertia(self.iteration);
+        let (c1, c2) = (self.params.c1, self.params.c2);
+        let dim = self.x.dim();
+        for i in 0..self.x.len() {
+            for d in 0..dim {
+                let r1: f64 = ctx.rng().random();
+                let r2: f64 = ctx.rng().random();
+                let xi = self.x.row(i)[d];
+                let vi = &mut self.v[i * dim + d];
+                let vmax = self.vmax[d];
+                let nv = w * *vi + c1 * r1 * (self.pbest.row(i)[d] - xi) + c2 * r2 * (self.gbest[d] - xi);
+                *vi = nv.clamp(-vmax, vmax);
+                let mut nx = xi + *vi;
+                let (lo, hi) = (ctx.lower()[d], ctx.upper()[d]);
+                if nx < lo || nx > hi {
+                    nx = nx.clamp(lo, hi);
+                    *vi = 0.0;
+                }
+                self.x.row_mut(i)[d] = nx;
+            }
+            ctx.repair(self.x.row_mut(i));
+        }
+        ctx.evaluate_population(&self.x, &mut self.cost);
+        self.update_bests();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::optim::functions::{Function, FunctionObjective};
+    use crate::optim::{run, Budget};
+
+    #[test]
+    fn defaults_and_presets() {
+        let p = PsoParams::default();
+        assert_eq!(p, PsoParams::seed002());
+        assert_eq!(
+            (p.population, p.w_start, p.w_end, p.c1, p.c2, p.vmax_fraction),
+            (40, 0.729, 0.729, 1.494, 1.494, 1.0)
+        );
+        assert!(p.check().is_ok());
+        assert!(PsoParams::seed000().check().is_ok());
+        let p3 = PsoParams::seed003(500);
+        assert!(p3.check().is_ok());
+        assert_eq!(p3.inertia(0), 0.9);
+        assert!((p3.inertia(250) - 0.65).abs() < 1e-12);
+        assert_eq!(p3.inertia(500), 0.4);
+        assert_eq!(p3.inertia(10_000), 0.4);
+        assert_eq!(PsoParams::seed000().inertia(123), 0.7);
+    }
+
+    #[test]
+    fn check_rejects_bad_values() {
+        let bad = [
+            PsoParams { population: 1, ..PsoParams::default() },
+            PsoParams { w_start: f64::NAN, ..PsoParams::default() },
+            PsoParams { c1: -1.0, ..PsoParams::default() },
+            PsoParams { c2: f64::INFINITY, ..PsoParams::default() },
+            PsoParams { vmax_fraction: 0.0, ..PsoParams::default() },
+            PsoParams { w_end: 0.4, ..PsoParams::default() },
+            PsoParams { w_schedule_iterations: Some(0), ..PsoParams::default() },
+        ];
+        for p in bad {
+            let e = p.check().unwrap_err().to_string();
+            assert!(e.starts_with("planner.params."), "{e}");
+        }
+    }
+
+    #[test]
+    fn serde_defaults_and_unknown_fields() {
+        let p: PsoParams = serde_json::from_str(r#"{"population": 10}"#).unwrap();
+        assert_eq!(p, PsoParams { population: 10, ..PsoParams::default() });
+        assert!(serde_json::from_str::<PsoParams>(r#"{"inertia": 0.5}"#).is_err());
+        let back: PsoParams = serde_json::from_str(&serde_json::to_string(&PsoParams::seed003(7)).unwrap()).unwrap();
+        assert_eq!(back, PsoParams::seed003(7));
+    }
+
+    #[test]
+    fn stays_in_box_and_converges_on_sphere() {
+        let obj = FunctionObjective::new(Function::Sphere, 5, -5.12, 5.12);
+        let mut pso = Pso::new(PsoParams::default());
+        let r = run(&mut pso, &obj, &Budget::iterations(100), crate::rng::run_rng(3, 0), false, &mut |_| {});
+        assert!(r.best_cost < 1e-6, "{}", r.best_cost);
+        assert!(pso.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
+        assert_eq!(pso.gbest_cost, r.best_cost);
+    }
+}

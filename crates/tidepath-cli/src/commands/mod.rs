@@ -1,0 +1,4 @@
+pub mod eval;
+pub mod plan;
+pub mod planners;
+pub mod scenarios;

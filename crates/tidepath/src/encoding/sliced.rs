@@ -1,0 +1,198 @@
+//! The sliced encoding of seeds 000 (section 3.1, the planes x = x_i), 001 (eqs. 12-13, the
+//! lines Y = j) and 003 (section 3.1, planes parallel to YOZ), generalised so the main axis is
+//! the horizontal start-to-goal direction instead of the x axis.
+//!
+//! Interior waypoint i (1..=n) lies on the vertical plane perpendicular to the main axis at
+//! distance s_i = i D / (n + 1) from the start, D the horizontal start-goal distance. Its
+//! decision variables are the lateral offset l_i from the start-goal line (positive to the left
+//! of travel) and, in 3-D, its absolute height z_i. The papers' x-axis case is the special case
+//! where the main axis is x and l_i = y_i - y_start.
+//!
+//! Bounds are derived from the world: each plane's lateral range is where it crosses the domain
+//! rectangle (so every decoded waypoint lies inside the domain) and z spans the domain box
+//! intersected with the vehicle's depth band.
+
+use crate::error::{Error, Result};
+use crate::geom::{Aabb, Vec2, Vec3};
+
+use super::Encoding;
+
+#[derive(Clone, Debug)]
+pub struct Sliced {
+    start: Vec3,
+    goal: Vec3,
+    /// Unit main axis (horizontal) and its left normal.
+    axis: Vec2,
+    normal: Vec2,
+    /// Plane positions along the main axis (m from the start) and the horizontal start-goal
+    /// distance.
+    stations: Vec<f64>,
+    span: f64,
+    three_d: bool,
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+}
+
+impl Sliced {
+    /// `waypoints` interior planes; `z_range` is the allowed height band (3-D) or `None` for a
+    /// 2-D plane, where z is interpolated between start and goal.
+    pub fn new(start: Vec3, goal: Vec3, waypoints: usize, domain: &Aabb, z_range: Option<(f64, f64)>) -> Result<Self> {
+        if waypoints == 0 {
+            return Err(Error::input("encoding.waypoints", "must be at least 1, got 0"));
+        }
+        let span = (goal - start).truncate();
+        let dist = span.length();
+        if dist <= 1e-9 * domain.size().max_element().max(1.0) {
+            return Err(Error::input(
+                "encoding.kind",
+                "the sliced encoding needs start and goal apart horizontally; use kind = \"free\"",
+            ));
+        }
+        let axis = span / dist;
+        let normal = axis.perp();
+        let stations: Vec<f64> = (1..=waypoints).map(|i| dist * i as f64 / (waypoints + 1) as f64).collect();
+        let per = if z_range.is_some() { 2 } else { 1 };
+        let (mut lower, mut upper) = (Vec::with_capacity(per * waypoints), Vec::with_capacity(per * waypoints));
+        for (i, &s) in stations.iter().enumerate() {
+            let base = start.truncate() + axis * s;
+            let (lo, hi) = lateral_range(base, normal, domain).ok_or_else(|| {
+                Error::input("encoding", format!("plane {} of the sliced encoding lies outside the domain", i + 1))
+            })?;
+            lower.push(lo);
+            upper.push(hi);
+            if let Some((zlo, zhi)) = z_range {
+                lower.push(zlo);
+                upper.push(zhi);
+            }
+        }
+        if let Some((zlo, zhi)) = z_range {
+            if zlo > zhi {
+                return Err(Error::input(
+                    "vehicle.depth_min",
+                    format!("the depth band and the domain leave no room: z range [{zlo}, {zhi}]"),
+                ));
+            }
+        }
+        Ok(Self { start, goal, axis, normal, stations, span: dist, three_d: z_range.is_some(), lower, upper })
+    }
+
+    pub fn waypoints(&self) -> usize {
+        self.stations.len()
+    }
+}
+
+/// The interval of l for which base + l * normal stays inside the domain rectangle, shrunk by
+/// a hair so decoded points never round outside.
+fn lateral_range(base: Vec2, normal: Vec2, domain: &Aabb) -> Option<(f64, f64)> {
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    for k in 0..2 {
+        let (p, n, min, max) = (base[k], normal[k], domain.min[k], domain.max[k]);
+        if n.abs() < 1e-15 {
+            if p < min || p > max {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((min - p) / n, (max - p) / n);
+        lo = lo.max(a.min(b));
+        hi = hi.min(a.max(b));
+    }
+    let eps = 1e-9 * (domain.size().x + domain.size().y);
+    (lo + eps <= hi - eps).then_some((lo + eps, hi - eps))
+}
+
+impl Encoding for Sliced {
+    fn id(&self) -> &'static str {
+        "sliced"
+    }
+
+    fn dim(&self) -> usize {
+        self.lower.len()
+    }
+
+    fn lower(&self) -> &[f64] {
+        &self.lower
+    }
+
+    fn upper(&self) -> &[f64] {
+        &self.upper
+    }
+
+    fn decode_into(&self, x: &[f64], out: &mut Vec<Vec3>) {
+        out.clear();
+        out.push(self.start);
+        let per = if self.three_d { 2 } else { 1 };
+        for (i, &s) in self.stations.iter().enumerate() {
+            let xy = self.start.truncate() + self.axis * s + self.normal * x[per * i];
+            let z =
+                if self.three_d { x[per * i + 1] } else { self.start.z + (self.goal.z - self.start.z) * s / self.span };
+            out.push(xy.extend(z));
+        }
+        out.push(self.goal);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn domain() -> Aabb {
+        Aabb::new(Vec3::new(0.0, 0.0, -100.0), Vec3::new(100.0, 50.0, 0.0))
+    }
+
+    #[test]
+    fn x_axis_case_matches_the_papers_planes() {
+        let (s, g) = (Vec3::new(0.0, 10.0, -50.0), Vec3::new(100.0, 10.0, -20.0));
+        let enc = Sliced::new(s, g, 4, &domain(), Some((-90.0, -10.0))).unwrap();
+        assert_eq!(enc.dim(), 8);
+        // Planes at x = 20, 40, 60, 80; lateral range is y in [0, 50] minus y_start = 10.
+        assert!((enc.lower()[0] + 10.0).abs() < 1e-6 && (enc.upper()[0] - 40.0).abs() < 1e-6);
+        assert_eq!((enc.lower()[1], enc.upper()[1]), (-90.0, -10.0));
+        let path = enc.decode(&[5.0, -30.0, 0.0, -40.0, -5.0, -50.0, 1.0, -60.0]);
+        assert_eq!(path.len(), 6);
+        assert_eq!(path[0], s);
+        assert!((path[1] - Vec3::new(20.0, 15.0, -30.0)).length() < 1e-12);
+        assert!((path[3] - Vec3::new(60.0, 5.0, -50.0)).length() < 1e-12);
+        assert_eq!(path[5], g);
+    }
+
+    #[test]
+    fn diagonal_axis_keeps_waypoints_in_the_domain() {
+        let (s, g) = (Vec3::new(5.0, 5.0, -50.0), Vec3::new(95.0, 45.0, -50.0));
+        let enc = Sliced::new(s, g, 7, &domain(), Some((-100.0, 0.0))).unwrap();
+        let d = domain();
+        for corner in [enc.lower().to_vec(), enc.upper().to_vec()] {
+            for p in enc.decode(&corner) {
+                assert!(d.contains(p), "{p:?} left the domain");
+            }
+        }
+        // Zero offsets give the straight line.
+        let mid = enc.decode(
+            &vec![0.0; enc.dim()]
+                .iter()
+                .enumerate()
+                .map(|(i, _)| if i % 2 == 1 { -50.0 } else { 0.0 })
+                .collect::<Vec<_>>(),
+        );
+        for p in &mid {
+            let t = (p.x - 5.0) / 90.0;
+            assert!((p.y - (5.0 + 40.0 * t)).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn two_d_variant_interpolates_height() {
+        let (s, g) = (Vec3::new(0.0, 25.0, 0.0), Vec3::new(100.0, 25.0, 0.0));
+        let enc = Sliced::new(s, g, 3, &domain(), None).unwrap();
+        assert_eq!(enc.dim(), 3);
+        let p = enc.decode(&[1.0, 2.0, 3.0]);
+        assert!((p[2] - Vec3::new(50.0, 27.0, 0.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn rejects_vertical_travel() {
+        let s = Vec3::new(50.0, 25.0, -90.0);
+        let err = Sliced::new(s, Vec3::new(50.0, 25.0, -10.0), 3, &domain(), Some((-100.0, 0.0))).unwrap_err();
+        assert!(err.to_string().contains("encoding.kind"));
+    }
+}

@@ -1,0 +1,101 @@
+//! The allocation-free pass every cost model builds on.
+
+use super::PathModel;
+use crate::geom::{heading_change, pitch, Vec3};
+use crate::world::Dims;
+
+/// Everything about a path that a cost model or a feasibility verdict needs, except
+/// clearance (which costs more and is only reported, see [`super::Metrics`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Assessment {
+    /// 3-D length (m).
+    pub length: f64,
+    /// Travel time from departure to arrival (s).
+    pub travel_time: f64,
+    /// (segment, object) pairs closer than the safety distance; the seabed counts as one object.
+    pub collisions: u32,
+    /// Waypoints outside the domain or (3-D) outside the vehicle's depth band.
+    pub bounds_violations: u32,
+    /// Segment pieces where the current stops the vehicle from holding its track.
+    pub current_blocked: u32,
+    /// Joints whose heading change exceeds the vehicle's limit, and the summed excess (rad).
+    pub turn_violations: u32,
+    pub turn_excess: f64,
+    /// Segments steeper than the vehicle's pitch limit, and the summed excess (rad).
+    pub pitch_violations: u32,
+    pub pitch_excess: f64,
+    /// Largest heading change at a joint and largest |pitch| of a segment (rad).
+    pub max_turn: f64,
+    pub max_pitch: f64,
+}
+
+impl Assessment {
+    pub fn violation_count(&self) -> u32 {
+        self.collisions + self.bounds_violations + self.current_blocked + self.turn_violations + self.pitch_violations
+    }
+
+    pub fn feasible(&self) -> bool {
+        self.violation_count() == 0
+    }
+}
+
+/// Relative slack on the domain box, so waypoints placed exactly on a face by an encoding are
+/// not rejected by rounding.
+const BOUNDS_SLACK: f64 = 1e-9;
+
+impl PathModel<'_> {
+    /// Judges `points` (start and goal included). `times` receives the arrival time at each point.
+    pub fn assess(&self, points: &[Vec3], times: &mut Vec<f64>) -> Assessment {
+        let mut out = Assessment { current_blocked: self.arrival_times(points, times), ..Default::default() };
+        let world = self.world;
+        let veh = self.vehicle;
+        let three_d = world.dims == Dims::Three;
+        let slack = world.bounds.size().max_element() * BOUNDS_SLACK;
+        let outer = world.bounds.inflate(slack);
+
+        for p in points {
+            let outside_depth = three_d && (p.z > veh.z_max() + slack || p.z < veh.z_min() - slack);
+            if !outer.contains(*p) || outside_depth {
+                out.bounds_violations += 1;
+            }
+        }
+
+        let safety = veh.safety_distance;
+        let mut prev_dir: Option<Vec3> = None;
+        for (i, w) in points.windows(2).enumerate() {
+            let (a, b) = (w[0], w[1]);
+            let dir = b - a;
+            out.length += dir.length();
+            if world.segment_hits_terrain(a, b, safety) {
+                out.collisions += 1;
+            }
+            let (ta, tb) = (times[i], times[i + 1]);
+            for o in &world.obstacles {
+                if o.segment_hits(a, b, ta, tb, safety) {
+                    out.collisions += 1;
+                }
+            }
+            if three_d && dir.length_squared() > 0.0 {
+                let p = pitch(dir).abs();
+                out.max_pitch = out.max_pitch.max(p);
+                if p > veh.max_pitch {
+                    out.pitch_violations += 1;
+                    out.pitch_excess += p - veh.max_pitch;
+                }
+            }
+            if let Some(turn) = prev_dir.and_then(|pd| heading_change(pd, dir)) {
+                out.max_turn = out.max_turn.max(turn);
+                if turn > veh.max_turn {
+                    out.turn_violations += 1;
+                    out.turn_excess += turn - veh.max_turn;
+                }
+            }
+            // A segment without horizontal extent keeps the previous heading.
+            if dir.truncate().length_squared() > 0.0 {
+                prev_dir = Some(dir);
+            }
+        }
+        out.travel_time = times.last().copied().unwrap_or(self.departure_time) - self.departure_time;
+        out
+    }
+}

@@ -1,0 +1,313 @@
+//! The scenario file format (TOML), as plain serde types. `build.rs` turns a spec into the
+//! runtime model and checks every value; this file only says what may be written.
+//!
+//! Unknown keys are errors, so a typo is reported instead of silently ignored. New sections
+//! are added as optional fields, so older files keep loading.
+
+use std::collections::BTreeMap;
+
+use serde::{Deserialize, Serialize};
+
+pub type P3 = [f64; 3];
+pub type P2 = [f64; 2];
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScenarioSpec {
+    pub name: String,
+    #[serde(default)]
+    pub description: String,
+    pub world: WorldSpec,
+    #[serde(default)]
+    pub vehicle: VehicleSpec,
+    pub mission: MissionSpec,
+    #[serde(default)]
+    pub model: ModelSpec,
+    #[serde(default)]
+    pub cost: CostSpec,
+    #[serde(default)]
+    pub encoding: EncodingSpec,
+    #[serde(default)]
+    pub planner: PlannerSpec,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WorldSpec {
+    /// 2 (horizontal plane) or 3.
+    #[serde(default = "three")]
+    pub dimensions: u8,
+    pub bounds: BoundsSpec,
+    #[serde(default)]
+    pub terrain: TerrainSpec,
+    #[serde(default)]
+    pub obstacles: Vec<ObstacleSpec>,
+    #[serde(default)]
+    pub current: CurrentSpec,
+    #[serde(default)]
+    pub waves: Option<GridFieldSpec>,
+}
+
+fn three() -> u8 {
+    3
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoundsSpec {
+    pub min: P3,
+    pub max: P3,
+}
+
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum TerrainSpec {
+    #[default]
+    None,
+    /// Base level plus Gaussian peaks (seed 000 eq. 1, seed 001 eq. 11).
+    Peaks {
+        base: f64,
+        #[serde(default)]
+        peaks: Vec<PeakSpec>,
+        #[serde(default)]
+        ceiling: Option<f64>,
+    },
+    /// Node elevations on a regular grid, row-major by y then x.
+    Grid { origin: P2, spacing: P2, shape: [usize; 2], elevations: Vec<f64> },
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PeakSpec {
+    pub x: f64,
+    pub y: f64,
+    pub height: f64,
+    pub sigma_x: f64,
+    pub sigma_y: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum ObstacleSpec {
+    Sphere {
+        center: P3,
+        radius: f64,
+        #[serde(default)]
+        velocity: Option<P3>,
+    },
+    /// Vertical cylinder; omit z_min / z_max for the full water column.
+    Cylinder {
+        center: P2,
+        radius: f64,
+        #[serde(default)]
+        z_min: Option<f64>,
+        #[serde(default)]
+        z_max: Option<f64>,
+        #[serde(default)]
+        velocity: Option<P3>,
+    },
+    Box {
+        min: P3,
+        max: P3,
+        #[serde(default)]
+        velocity: Option<P3>,
+    },
+    Circle {
+        center: P2,
+        radius: f64,
+        #[serde(default)]
+        velocity: Option<P3>,
+    },
+}
+
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum CurrentSpec {
+    #[default]
+    None,
+    Uniform {
+        velocity: P3,
+    },
+    /// Lamb-Oseen vortices (seed 001 eqs. 3-5).
+    Vortices {
+        vortices: Vec<VortexSpec>,
+    },
+    /// Seed 003's meandering jet mapped onto `region` (defaults to the domain rectangle).
+    Jet(JetSpec),
+    /// u, v on a regular grid at several times; bilinear in space, linear in time.
+    Grid {
+        origin: P2,
+        spacing: P2,
+        shape: [usize; 2],
+        times: Vec<f64>,
+        u: Vec<Vec<f64>>,
+        v: Vec<Vec<f64>>,
+    },
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VortexSpec {
+    pub x: f64,
+    pub y: f64,
+    pub strength: f64,
+    pub core_radius: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JetSpec {
+    /// [x_min, y_min, x_max, y_max] of the world rectangle the jet is mapped onto.
+    #[serde(default)]
+    pub region: Option<[f64; 4]>,
+    /// Current speed (m/s) everywhere, direction from the jet (seed 003's |v_c| = ratio |v|).
+    #[serde(default)]
+    pub speed: Option<f64>,
+    /// Alternatively scale so the jet's fastest point moves at this speed (m/s).
+    #[serde(default)]
+    pub max_speed: Option<f64>,
+    /// Seconds per jet time unit (default 2000).
+    #[serde(default)]
+    pub time_scale: Option<f64>,
+    /// Overrides of the jet's constants (defaults: ALGORITHMS.md section 0.3).
+    #[serde(default)]
+    pub kappa: Option<f64>,
+    #[serde(default)]
+    pub eps: Option<f64>,
+    #[serde(default)]
+    pub eta: Option<f64>,
+    #[serde(default)]
+    pub alpha0: Option<f64>,
+    #[serde(default)]
+    pub beta: Option<f64>,
+    #[serde(default)]
+    pub gamma: Option<f64>,
+    #[serde(default)]
+    pub omega0: Option<f64>,
+    /// Jet-unit intervals the region maps onto (defaults [0, 10] and [-3, 3]).
+    #[serde(default)]
+    pub jet_x: Option<[f64; 2]>,
+    #[serde(default)]
+    pub jet_y: Option<[f64; 2]>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GridFieldSpec {
+    pub origin: P2,
+    pub spacing: P2,
+    pub shape: [usize; 2],
+    pub heights: Vec<f64>,
+}
+
+/// Vehicle limits; every field has a default (a generic 1.5 m/s survey AUV).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct VehicleSpec {
+    pub speed: f64,
+    pub speed_min: f64,
+    pub speed_max: f64,
+    pub turn_radius: f64,
+    pub max_turn_deg: f64,
+    pub max_pitch_deg: f64,
+    pub depth_min: f64,
+    pub depth_max: f64,
+    pub safety_distance: f64,
+}
+
+impl Default for VehicleSpec {
+    fn default() -> Self {
+        let v = crate::vehicle::Vehicle::default();
+        Self {
+            speed: v.speed,
+            speed_min: v.speed_min,
+            speed_max: v.speed_max,
+            turn_radius: v.turn_radius,
+            max_turn_deg: v.max_turn.to_degrees(),
+            max_pitch_deg: v.max_pitch.to_degrees(),
+            depth_min: v.depth_min,
+            depth_max: v.depth_max,
+            safety_distance: v.safety_distance,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MissionSpec {
+    pub start: P3,
+    pub goal: P3,
+    #[serde(default)]
+    pub departure_time: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ModelSpec {
+    /// "crab" (default) or "vector-sum" (seed 003 eq. 17).
+    pub travel_time: crate::path::TravelModel,
+    /// Longest sub-step (m) for integrating travel time through the current.
+    pub current_step: Option<f64>,
+}
+
+impl Default for ModelSpec {
+    fn default() -> Self {
+        Self { travel_time: crate::path::TravelModel::Crab, current_step: None }
+    }
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct CostSpec {
+    pub model: String,
+    /// Model-specific weights, checked by the model.
+    pub weights: toml::Table,
+}
+
+impl Default for CostSpec {
+    fn default() -> Self {
+        Self { model: "general".into(), weights: toml::Table::new() }
+    }
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct EncodingSpec {
+    /// "sliced" or "free".
+    pub kind: String,
+    /// Interior waypoints (start and goal come on top).
+    pub waypoints: usize,
+}
+
+impl Default for EncodingSpec {
+    fn default() -> Self {
+        Self { kind: "sliced".into(), waypoints: 20 }
+    }
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct PlannerSpec {
+    /// The planner `plan` uses when `--planner` is not given.
+    pub id: String,
+    pub iterations: Option<u64>,
+    pub evaluations: Option<u64>,
+    /// Wall-time safety net (s); results that hit it depend on the machine.
+    pub time_limit_s: Option<f64>,
+    pub population: Option<usize>,
+    /// Per-planner parameters: `[planner.params.pso]`, `[planner.params.ga]`, ...
+    pub params: BTreeMap<String, toml::Table>,
+}
+
+impl Default for PlannerSpec {
+    fn default() -> Self {
+        Self {
+            id: "pso".into(),
+            iterations: Some(200),
+            evaluations: None,
+            time_limit_s: None,
+            population: None,
+            params: BTreeMap::new(),
+        }
+    }
+}
