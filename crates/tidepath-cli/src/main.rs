@@ -32,6 +32,21 @@ enum Command {
     Plan(commands::plan::PlanArgs),
     /// Evaluate a plan JSON against a scenario: cost terms and feasibility.
     Eval(commands::eval::EvalArgs),
+    /// Compare planners over many seeded runs: statistics, rank-sum marks, plots.
+    Compare(commands::compare::CompareArgs),
+    /// Benchmark optimizers on the standard test functions.
+    Bench(commands::bench::BenchArgs),
+    /// Rerun a paper's experiments and set our numbers beside the paper's in REPORT.md.
+    Reproduce(commands::reproduce::ReproduceArgs),
+}
+
+/// Worker threads for `--jobs`: the given count, or every core.
+pub fn jobs(requested: Option<usize>) -> Result<usize, tidepath::Error> {
+    match requested {
+        Some(0) => Err(tidepath::Error::input("--jobs", "must be at least 1, got 0")),
+        Some(j) => Ok(j),
+        None => Ok(std::thread::available_parallelism().map_or(1, |n| n.get())),
+    }
 }
 
 /// How a command ended, mapped to the documented exit codes.
@@ -48,6 +63,9 @@ fn main() -> ExitCode {
         Command::Planners => commands::planners::list(),
         Command::Plan(args) => commands::plan::run(&args),
         Command::Eval(args) => commands::eval::run(&args),
+        Command::Compare(args) => commands::compare::run(&args),
+        Command::Bench(args) => commands::bench::run(&args),
+        Command::Reproduce(args) => commands::reproduce::run(&args),
     };
     match result {
         Ok(Outcome::Success) => ExitCode::SUCCESS,

@@ -39,3 +39,29 @@ impl DelayedBar {
         self.bar.finish_and_clear();
     }
 }
+
+/// Counts finished runs of an experiment; shared by worker threads.
+pub struct RunsBar {
+    bar: ProgressBar,
+}
+
+impl RunsBar {
+    pub fn new(label: &str, total: usize) -> Self {
+        let bar = ProgressBar::with_draw_target(Some(total as u64), ProgressDrawTarget::stderr());
+        bar.set_style(
+            ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} runs ({elapsed}, eta {eta})")
+                .expect("static template")
+                .progress_chars("=> "),
+        );
+        bar.set_prefix(label.to_string());
+        Self { bar }
+    }
+
+    pub fn set(&self, done: usize) {
+        self.bar.set_position(done as u64);
+    }
+
+    pub fn finish(self) {
+        self.bar.finish_and_clear();
+    }
+}

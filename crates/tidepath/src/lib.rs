@@ -17,6 +17,7 @@
 pub mod cost;
 pub mod encoding;
 pub mod error;
+pub mod experiments;
 pub mod geom;
 pub mod io;
 pub mod optim;

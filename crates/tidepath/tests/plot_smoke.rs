@@ -174,3 +174,50 @@ fn two_d_world_with_uniform_current_and_flat_history() {
         std::fs::write(dir.join("two_d.svg"), &svg).unwrap();
     }
 }
+
+#[test]
+fn tall_grid_world_with_many_planners_and_moving_obstacles() {
+    use tidepath::world::terrain::ElevationGrid;
+    use tidepath::world::RegularGrid2;
+    let mut world = World::open(Aabb::new(Vec3::new(0.0, 0.0, -300.0), Vec3::new(3_000.0, 6_000.0, 0.0)));
+    let grid = RegularGrid2::new(0.0, 0.0, 100.0, 100.0, 31, 61, "terrain").unwrap();
+    let z: Vec<f64> = (0..61)
+        .flat_map(|j| (0..31).map(move |i| -280.0 + 120.0 * ((i as f64) / 5.0).sin() * ((j as f64) / 9.0).cos()))
+        .collect();
+    world.terrain = Terrain::Grid(ElevationGrid::new(grid, z, "terrain").unwrap());
+    world.obstacles = vec![
+        Obstacle {
+            shape: Shape::Sphere { center: Vec3::new(1_500.0, 3_000.0, -150.0), radius: 200.0 },
+            velocity: Vec3::new(-0.3, 0.0, 0.0),
+        },
+        Obstacle {
+            shape: Shape::Circle { center: Vec2::new(800.0, 4_500.0), radius: 150.0 },
+            velocity: Vec3::new(0.0, 0.5, 0.0),
+        },
+    ];
+    world.current = Current::Uniform(Vec3::new(0.0, 0.2, 0.0));
+    let (start, goal) = (Vec3::new(300.0, 200.0, -50.0), Vec3::new(2_700.0, 5_800.0, -60.0));
+    let paths: Vec<Vec<Vec3>> = (0..5).map(|k| wiggly_path(start, goal, 6 + 3 * k)).collect();
+    let names = ["pso", "de", "ga", "random search", "straight line baseline"];
+    let histories: Vec<Vec<f64>> =
+        (0..3).map(|k| (0..40).map(|i| 50.0 + 10.0 * k as f64 - i as f64).collect()).collect();
+    let fig = PlanFigure {
+        title: "tall".into(),
+        world: &world,
+        start,
+        goal,
+        time: 600.0,
+        paths: paths.iter().zip(names).map(|(p, n)| PlotPath::new(n, p)).collect(),
+        histories: histories.iter().zip(names).map(|(h, n)| (n.to_string(), h.as_slice())).collect(),
+    };
+    let svg = render_plan_figure(&fig).unwrap();
+    assert_readable(&svg, "tall");
+    assert!(svg.contains("Plan view at t = 600 s") && svg.contains("seabed elevation (m)"));
+    for n in names {
+        assert!(svg.contains(n), "legend entry {n:?} missing");
+    }
+    if let Some(dir) = out_dir() {
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("tall.svg"), &svg).unwrap();
+    }
+}

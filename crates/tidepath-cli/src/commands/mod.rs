@@ -1,4 +1,7 @@
+pub mod bench;
+pub mod compare;
 pub mod eval;
 pub mod plan;
 pub mod planners;
+pub mod reproduce;
 pub mod scenarios;

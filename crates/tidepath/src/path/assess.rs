@@ -1,7 +1,7 @@
 //! The allocation-free pass every cost model builds on.
 
 use super::PathModel;
-use crate::geom::{heading_change, pitch, Vec3};
+use crate::geom::{Vec2, Vec3};
 use crate::world::Dims;
 
 /// Everything about a path that a cost model or a feasibility verdict needs, except
@@ -61,7 +61,13 @@ impl PathModel<'_> {
         }
 
         let safety = veh.safety_distance;
-        let mut prev_dir: Option<Vec3> = None;
+        // Angles are compared through their cosine and tangent so the common case needs no
+        // inverse trigonometry; acos/atan run only for violations and once for the maxima.
+        let cos_turn_limit = veh.max_turn.cos();
+        let tan_pitch_limit = veh.max_pitch.tan();
+        let mut min_cos_turn = 1.0f64;
+        let mut max_slope = 0.0f64;
+        let mut prev_h: Option<(Vec2, f64)> = None;
         for (i, w) in points.windows(2).enumerate() {
             let (a, b) = (w[0], w[1]);
             let dir = b - a;
@@ -75,27 +81,49 @@ impl PathModel<'_> {
                     out.collisions += 1;
                 }
             }
-            if three_d && dir.length_squared() > 0.0 {
-                let p = pitch(dir).abs();
-                out.max_pitch = out.max_pitch.max(p);
-                if p > veh.max_pitch {
+            let h = dir.truncate();
+            let h_len = h.length();
+            if three_d && dir.z != 0.0 {
+                let slope = slope(dir, h_len);
+                max_slope = max_slope.max(slope);
+                if slope > tan_pitch_limit {
                     out.pitch_violations += 1;
-                    out.pitch_excess += p - veh.max_pitch;
-                }
-            }
-            if let Some(turn) = prev_dir.and_then(|pd| heading_change(pd, dir)) {
-                out.max_turn = out.max_turn.max(turn);
-                if turn > veh.max_turn {
-                    out.turn_violations += 1;
-                    out.turn_excess += turn - veh.max_turn;
+                    out.pitch_excess += dir.z.abs().atan2(h_len) - veh.max_pitch;
                 }
             }
             // A segment without horizontal extent keeps the previous heading.
-            if dir.truncate().length_squared() > 0.0 {
-                prev_dir = Some(dir);
+            if h_len > 0.0 {
+                if let Some((ph, ph_len)) = prev_h {
+                    let c = turn_cos(ph, ph_len, h, h_len);
+                    min_cos_turn = min_cos_turn.min(c);
+                    if c < cos_turn_limit {
+                        out.turn_violations += 1;
+                        out.turn_excess += c.acos() - veh.max_turn;
+                    }
+                }
+                prev_h = Some((h, h_len));
             }
         }
+        out.max_turn = min_cos_turn.acos();
+        out.max_pitch = max_slope.atan();
         out.travel_time = times.last().copied().unwrap_or(self.departure_time) - self.departure_time;
         out
     }
+}
+
+/// |dz| / horizontal length of a segment (+inf when vertical). Shared with the violation list
+/// so both agree exactly at the limit.
+#[inline]
+pub(super) fn slope(dir: Vec3, h_len: f64) -> f64 {
+    if h_len > 0.0 {
+        dir.z.abs() / h_len
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// Cosine of the heading change between two horizontal directions of known lengths.
+#[inline]
+pub(super) fn turn_cos(a: Vec2, a_len: f64, b: Vec2, b_len: f64) -> f64 {
+    (a.dot(b) / (a_len * b_len)).clamp(-1.0, 1.0)
 }

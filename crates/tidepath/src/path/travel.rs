@@ -2,6 +2,7 @@
 
 use super::PathModel;
 use crate::geom::Vec3;
+use crate::world::Current;
 
 /// How the vehicle's through-water velocity and the current combine.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -72,7 +73,12 @@ impl PathModel<'_> {
         let current = &self.world.current;
         match self.settings.travel {
             TravelModel::Crab => {
-                let pieces = (len / self.settings.current_step).ceil().max(1.0);
+                // A field constant in space and time needs one piece, still water none.
+                let pieces = match current {
+                    Current::None => return (len / v, 0),
+                    Current::Uniform(_) => 1.0,
+                    _ => (len / self.settings.current_step).ceil().max(1.0),
+                };
                 let n = pieces as u32;
                 let step = len / pieces;
                 let (mut t, mut blocked) = (t0, 0);

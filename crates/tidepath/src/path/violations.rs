@@ -1,7 +1,8 @@
 //! The list of reasons a path is infeasible, for `eval` and the plan JSON.
 
+use super::assess::{slope, turn_cos};
 use super::{PathModel, TravelModel};
-use crate::geom::{heading_change, pitch, Vec3};
+use crate::geom::{Vec2, Vec3};
 use crate::world::Dims;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -54,7 +55,7 @@ impl PathModel<'_> {
             }
         }
         let safety = veh.safety_distance;
-        let mut prev_dir: Option<Vec3> = None;
+        let mut prev_h: Option<(Vec2, f64)> = None;
         for (i, w) in points.windows(2).enumerate() {
             let (a, b) = (w[0], w[1]);
             let dir = b - a;
@@ -89,35 +90,35 @@ impl PathModel<'_> {
                     );
                 }
             }
-            if three_d && dir.length_squared() > 0.0 {
-                let p = pitch(dir).abs();
-                if p > veh.max_pitch {
-                    push(
-                        ViolationKind::Pitch,
-                        i,
-                        format!(
-                            "segment {i} pitch {:.1} deg exceeds the limit {:.1} deg",
-                            p.to_degrees(),
-                            veh.max_pitch.to_degrees()
-                        ),
-                    );
-                }
+            let h = dir.truncate();
+            let h_len = h.length();
+            if three_d && dir.z != 0.0 && slope(dir, h_len) > veh.max_pitch.tan() {
+                push(
+                    ViolationKind::Pitch,
+                    i,
+                    format!(
+                        "segment {i} pitch {:.1} deg exceeds the limit {:.1} deg",
+                        dir.z.abs().atan2(h_len).to_degrees(),
+                        veh.max_pitch.to_degrees()
+                    ),
+                );
             }
-            if let Some(turn) = prev_dir.and_then(|pd| heading_change(pd, dir)) {
-                if turn > veh.max_turn {
-                    push(
-                        ViolationKind::Turn,
-                        i,
-                        format!(
-                            "waypoint {i} turn {:.1} deg exceeds the limit {:.1} deg",
-                            turn.to_degrees(),
-                            veh.max_turn.to_degrees()
-                        ),
-                    );
+            if h_len > 0.0 {
+                if let Some((ph, ph_len)) = prev_h {
+                    let c = turn_cos(ph, ph_len, h, h_len);
+                    if c < veh.max_turn.cos() {
+                        push(
+                            ViolationKind::Turn,
+                            i,
+                            format!(
+                                "waypoint {i} turn {:.1} deg exceeds the limit {:.1} deg",
+                                c.acos().to_degrees(),
+                                veh.max_turn.to_degrees()
+                            ),
+                        );
+                    }
                 }
-            }
-            if dir.truncate().length_squared() > 0.0 {
-                prev_dir = Some(dir);
+                prev_h = Some((h, h_len));
             }
         }
         out

@@ -8,7 +8,7 @@ pub mod registry;
 
 pub use objective::PathObjective;
 pub use optimizer_planner::OptimizerPlanner;
-pub use registry::{build_planner, planner_info, PlannerInfo, PLANNERS};
+pub use registry::{build_optimizer, build_planner, planner_info, PlannerInfo, PLANNERS};
 
 use std::time::Duration;
 

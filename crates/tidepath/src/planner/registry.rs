@@ -5,6 +5,7 @@ use crate::error::{Error, Result};
 use crate::optim::de::{De, DeParams};
 use crate::optim::ga::{Ga, GaParams};
 use crate::optim::pso::{Pso, PsoParams};
+use crate::optim::Optimizer;
 
 #[derive(Clone, Copy, Debug)]
 pub struct PlannerInfo {
@@ -49,13 +50,23 @@ fn unknown(id: &str) -> Error {
 /// Builds planner `id` from its `[planner.params.ID]` table, with `population` overriding the
 /// table's population when given.
 pub fn build_planner(id: &str, params: Option<&toml::Table>, population: Option<usize>) -> Result<Box<dyn Planner>> {
+    Ok(Box::new(OptimizerPlanner::new(build_optimizer(id, params, population)?)))
+}
+
+/// The bare optimizer behind planner `id`, for problems that are not paths (benchmark
+/// functions).
+pub fn build_optimizer(
+    id: &str,
+    params: Option<&toml::Table>,
+    population: Option<usize>,
+) -> Result<Box<dyn Optimizer>> {
     let mut table = params.cloned().unwrap_or_default();
     if let Some(n) = population {
         table.insert("population".into(), toml::Value::Integer(n as i64));
     }
     let prefix = format!("planner.params.{id}");
     let value = toml::Value::Table(table);
-    let optimizer: Box<dyn crate::optim::Optimizer> = match id {
+    Ok(match id {
         "pso" => {
             let p: PsoParams = crate::scenario::from_value(value, &prefix)?;
             p.check()?;
@@ -72,6 +83,5 @@ pub fn build_planner(id: &str, params: Option<&toml::Table>, population: Option<
             Box::new(De::new(p))
         }
         other => return Err(unknown(other)),
-    };
-    Ok(Box::new(OptimizerPlanner::new(optimizer)))
+    })
 }

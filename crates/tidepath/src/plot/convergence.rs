@@ -16,7 +16,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::style::{self, plot_err, LegendEntry, Swatch};
 use crate::error::Result;
 
-const Y_LABELS: usize = 7;
+pub(crate) const Y_LABELS: usize = 7;
 
 /// One curve of a convergence plot: `median[i]` is the value at iteration i; `band`, when
 /// given, is (lower, upper) per iteration and is shaded behind the line.
@@ -25,12 +25,15 @@ pub struct ConvergenceSeries<'a> {
     pub label: String,
     pub median: &'a [f64],
     pub band: Option<(&'a [f64], &'a [f64])>,
+    /// Palette index ([`style::path_color`]); `None` takes the series' position in the list.
+    /// Set it when a series belongs to a path drawn elsewhere, so both share a colour.
+    pub color: Option<usize>,
 }
 
 impl<'a> ConvergenceSeries<'a> {
     /// A single run's history: a line without a band.
     pub fn line(label: impl Into<String>, values: &'a [f64]) -> Self {
-        Self { label: label.into(), median: values, band: None }
+        Self { label: label.into(), median: values, band: None, color: None }
     }
 }
 
@@ -46,6 +49,10 @@ pub fn wants_log_scale(values: impl IntoIterator<Item = f64>) -> bool {
         any = true;
     }
     any && hi / lo > 100.0
+}
+
+fn series_color(i: usize, s: &ConvergenceSeries) -> RGBColor {
+    style::path_color(s.color.unwrap_or(i))
 }
 
 /// Maximal runs of consecutive indices where `ok` holds.
@@ -72,8 +79,8 @@ fn all_values<'a>(series: &'a [ConvergenceSeries]) -> impl Iterator<Item = f64> 
     })
 }
 
-/// Draws the convergence panel. Series take colours [`style::path_color`] in order, so pass
-/// them in the same order as the paths of the plan view.
+/// Draws the convergence panel: one median line per series over its band, on a log10 axis
+/// when [`wants_log_scale`] says so.
 pub fn draw_convergence<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, series: &[ConvergenceSeries]) -> Result<()> {
     let body = style::caption(area, "Convergence")?;
     let finite: Vec<f64> = all_values(series).filter(|v| v.is_finite()).collect();
@@ -92,7 +99,7 @@ pub fn draw_convergence<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, serie
     let mut legend: Vec<LegendEntry> = series
         .iter()
         .enumerate()
-        .map(|(i, s)| LegendEntry::new(&s.label, Swatch::Line { color: style::path_color(i).to_rgba(), width: 2 }))
+        .map(|(i, s)| LegendEntry::new(&s.label, Swatch::Line { color: series_color(i, s).to_rgba(), width: 2 }))
         .collect();
     if series.iter().any(|s| s.band.is_some()) {
         legend
@@ -116,7 +123,7 @@ pub fn draw_convergence<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, serie
     }
 }
 
-fn build<'a, DB, Y>(
+pub(crate) fn build<'a, DB, Y>(
     area: &'a DrawingArea<DB, Shift>,
     x: Range<f64>,
     y: Y,
@@ -154,7 +161,7 @@ where
     Ok(chart)
 }
 
-fn draw_curves<DB, Y>(
+pub(crate) fn draw_curves<DB, Y>(
     mut chart: ChartContext<DB, Cartesian2d<RangedCoordf64, Y>>,
     series: &[ConvergenceSeries],
 ) -> Result<()>
@@ -168,7 +175,7 @@ where
     };
     let y = |v: f64| v.clamp(y_lo, y_hi);
     for (i, s) in series.iter().enumerate() {
-        let color = style::path_color(i);
+        let color = series_color(i, s);
         if let Some((lower, upper)) = s.band {
             let m = lower.len().min(upper.len());
             let ok = |k: usize| lower[k].is_finite() && upper[k].is_finite();
@@ -202,6 +209,34 @@ mod tests {
         assert!(!wants_log_scale([1000.0, 50.0, 20.0]));
         assert!(!wants_log_scale([1000.0, 0.0, 0.001]));
         assert!(!wants_log_scale([f64::NAN]));
+    }
+
+    #[test]
+    fn bands_render_behind_medians() {
+        let median: Vec<f64> = (0..60).map(|i| 5.0 + 300.0 * (-(i as f64) / 8.0).exp()).collect();
+        let lower: Vec<f64> = median.iter().map(|m| m * 0.7).collect();
+        let mut upper: Vec<f64> = median.iter().map(|m| m * 1.5).collect();
+        upper[10] = f64::INFINITY;
+        let other: Vec<f64> = median.iter().map(|m| m * 1.2 + 2.0).collect();
+        let series = [
+            ConvergenceSeries { label: "pso".into(), median: &median, band: Some((&lower, &upper)), color: None },
+            ConvergenceSeries { label: "de".into(), median: &other, band: Some((&lower, &other)), color: Some(3) },
+        ];
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (700, 420)).into_drawing_area();
+            root.fill(&WHITE).unwrap();
+            draw_convergence(&root, &series).unwrap();
+            root.present().unwrap();
+        }
+        // The infinite upper value splits the first band in two.
+        assert_eq!(svg.matches("<polygon").count(), 3);
+        assert!(svg.contains("interquartile range") && svg.contains("best cost (log scale)"));
+        assert!(!svg.contains("NaN"));
+        if let Some(dir) = std::env::var_os("TIDEPATH_PLOT_DIR") {
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(std::path::Path::new(&dir).join("convergence_bands.svg"), &svg).unwrap();
+        }
     }
 
     #[test]

@@ -30,7 +30,8 @@ pub struct PlanFigure<'a> {
     pub time: f64,
     /// One or more paths; they keep the same colour in every panel.
     pub paths: Vec<PlotPath<'a>>,
-    /// Best cost per iteration, per label, in the order of `paths`; may be empty.
+    /// Best cost per iteration, per label; a history labelled like a path gets its colour.
+    /// May be empty.
     pub histories: Vec<(String, &'a [f64])>,
 }
 
@@ -47,23 +48,29 @@ pub fn render_plan_figure(fig: &PlanFigure) -> Result<String> {
 
         // A wide domain gets a wider plan view; the right column keeps enough room to read.
         let b = fig.world.bounds;
-        let aspect = ((b.max.x - b.min.x) / (b.max.y - b.min.y)).clamp(0.5, 3.0);
+        let aspect = ((b.max.x - b.min.x) / (b.max.y - b.min.y)).clamp(0.3, 3.0);
         let avail_h = (h - TITLE_H) as f64 - 200.0;
-        let left_w = (aspect * avail_h + 190.0).clamp(700.0, 900.0) as u32;
+        let left_w = (aspect * avail_h + 200.0).clamp(540.0, 900.0) as u32;
         let (left, right) = body.split_horizontally(left_w);
         draw_plan_view(&left, fig.world, fig.time, &fig.paths, fig.start, fig.goal)?;
 
         let right = right.margin(0, 0, 16, 0);
-        let series: Vec<ConvergenceSeries> =
-            fig.histories.iter().map(|(label, values)| ConvergenceSeries::line(label.clone(), values)).collect();
-        if series.is_empty() {
-            draw_profile(&right, fig.world, &fig.paths)?;
-        } else {
-            let (_, rh) = right.dim_in_pixel();
-            let (top, bottom) = right.split_vertically(rh / 2);
-            draw_profile(&top.margin(0, 10, 0, 0), fig.world, &fig.paths)?;
-            draw_convergence(&bottom.margin(10, 0, 0, 0), &series)?;
-        }
+        // A history takes the colour of the path with the same label, whatever the order.
+        let series: Vec<ConvergenceSeries> = fig
+            .histories
+            .iter()
+            .enumerate()
+            .map(|(i, (label, values))| ConvergenceSeries {
+                color: Some(fig.paths.iter().position(|p| &p.label == label).unwrap_or(i)),
+                ..ConvergenceSeries::line(label.clone(), values)
+            })
+            .collect();
+        // The same layout with or without a history, so figures of different runs line up;
+        // without one the convergence panel says so.
+        let (_, rh) = right.dim_in_pixel();
+        let (top, bottom) = right.split_vertically(rh / 2);
+        draw_profile(&top.margin(0, 10, 0, 0), fig.world, &fig.paths)?;
+        draw_convergence(&bottom.margin(10, 0, 0, 0), &series)?;
         root.present().map_err(plot_err)?;
     }
     Ok(svg)

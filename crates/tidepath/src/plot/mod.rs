@@ -9,6 +9,7 @@
 
 pub mod contour;
 mod convergence;
+pub mod experiment;
 mod figure;
 mod plan_view;
 mod profile;

@@ -4,6 +4,8 @@
 //! distances to obstacles), so the plot size is computed here from the available area rather
 //! than left to plotters.
 
+use std::collections::HashMap;
+
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -14,7 +16,7 @@ use super::style::{self, plot_err, LegendEntry, LengthUnit, Marker, Swatch};
 use super::PlotPath;
 use crate::error::{Error, Result};
 use crate::geom::{Aabb, Vec2, Vec3};
-use crate::world::{Current, Shape, Terrain, World};
+use crate::world::{Current, Obstacle, Shape, Terrain, World};
 
 type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
@@ -225,11 +227,12 @@ pub fn draw_plan_view<DB: DrawingBackend>(
                 .map_err(plot_err)?;
         }
     }
-    draw_obstacles(&chart, world, time, u)?;
     if let Some(q) = &quiver {
         draw_quiver(&chart, q, u)?;
     }
+    draw_obstacles(&chart, world, time, u)?;
     draw_paths(&chart, paths, u)?;
+    draw_obstacle_motion(&chart, world, time, u)?;
     draw_endpoints(&chart, paths, start, goal, u)?;
     // Frame on top of the shading, which otherwise covers the axis line's inner half.
     chart
@@ -285,7 +288,7 @@ fn legend_entries(
         if !s.levels.is_empty() {
             out.push(LegendEntry::new(
                 format!("elevation contours every {} m", style::fmt_sig(s.step)),
-                Swatch::Line { color: style::CONTOUR, width: 1 },
+                Swatch::Line { color: style::CONTOUR.mix(1.6), width: 1 },
             ));
         }
         if s.has_land() {
@@ -295,39 +298,70 @@ fn legend_entries(
     out
 }
 
-fn draw_seabed<DB: DrawingBackend>(chart: &Chart<DB>, s: &Seabed, u: f64) -> Result<()> {
+/// A block of raster cells [i0, i1) x [j0, j1) of one colour.
+type Block = (usize, usize, usize, usize, RGBColor);
+/// A colour as a hashable key.
+type Rgb = (u8, u8, u8);
+/// A run of cells [i0, i1) of one colour within a row.
+type Run = (usize, usize, Rgb);
+
+/// Covers the raster with few rectangles: the most common colour becomes one background block
+/// and the remaining cells merge into runs along rows, then into stacks of identical runs. This
+/// keeps the SVG several times smaller than one `<rect>` per cell.
+fn seabed_blocks(s: &Seabed) -> Vec<Block> {
     let r = &s.raster;
-    // Each cell takes the mean of its corners (what the contours see); runs of equal colour
-    // along a row become one rectangle.
-    let mut rects = Vec::new();
-    for j in 0..r.ny - 1 {
-        let (ya, yb) = ((r.y0 + r.dy * j as f64) / u, (r.y0 + r.dy * (j + 1) as f64) / u);
-        let mut run: Option<(usize, RGBColor)> = None;
-        for i in 0..=r.nx - 1 {
-            let c = (i < r.nx - 1).then(|| {
-                let z = 0.25 * (r.at(i, j) + r.at(i + 1, j) + r.at(i, j + 1) + r.at(i + 1, j + 1));
-                if z.is_finite() {
-                    style::elevation_color(z, s.z_min, s.z_max)
-                } else {
-                    style::NO_TERRAIN_BG
-                }
-            });
-            match (run, c) {
-                (Some((_, rc)), Some(c)) if rc == c => {}
-                (prev, c) => {
-                    if let Some((i0, rc)) = prev {
-                        let xa = (r.x0 + r.dx * i0 as f64) / u;
-                        let xb = (r.x0 + r.dx * i as f64) / u;
-                        rects.push(Rectangle::new([(xa, ya), (xb, yb)], style::fill(rc)));
+    let (cx, cy) = (r.nx - 1, r.ny - 1);
+    // Each cell takes the mean of its corners, which is what the contours see.
+    let colors: Vec<RGBColor> = (0..cy)
+        .flat_map(|j| (0..cx).map(move |i| (i, j)))
+        .map(|(i, j)| {
+            let z = 0.25 * (r.at(i, j) + r.at(i + 1, j) + r.at(i, j + 1) + r.at(i + 1, j + 1));
+            if z.is_finite() {
+                style::elevation_color(z, s.z_min, s.z_max)
+            } else {
+                style::NO_TERRAIN_BG
+            }
+        })
+        .collect();
+    let key = |c: RGBColor| -> Rgb { (c.0, c.1, c.2) };
+    let mut counts: HashMap<Rgb, usize> = HashMap::new();
+    for &c in &colors {
+        *counts.entry(key(c)).or_default() += 1;
+    }
+    let background = colors.iter().copied().max_by_key(|&c| (counts[&key(c)], key(c))).unwrap_or(style::NO_TERRAIN_BG);
+    let mut blocks: Vec<Block> = vec![(0, cx, 0, cy, background)];
+    // Open stacks: run (i0, i1, colour) -> first row.
+    let mut open: HashMap<Run, usize> = HashMap::new();
+    for j in 0..=cy {
+        let mut next = HashMap::new();
+        if j < cy {
+            let row = &colors[j * cx..(j + 1) * cx];
+            let mut i0 = 0;
+            for i in 1..=cx {
+                if i == cx || row[i] != row[i0] {
+                    if row[i0] != background {
+                        let k = (i0, i, key(row[i0]));
+                        next.insert(k, open.remove(&k).unwrap_or(j));
                     }
-                    run = c.map(|c| (i, c));
+                    i0 = i;
                 }
             }
         }
+        let mut closed: Vec<_> = open.drain().collect();
+        closed.sort_unstable();
+        blocks.extend(closed.into_iter().map(|((i0, i1, (cr, cg, cb)), j0)| (i0, i1, j0, j, RGBColor(cr, cg, cb))));
+        open = next;
     }
+    blocks
+}
+
+fn draw_seabed<DB: DrawingBackend>(chart: &Chart<DB>, s: &Seabed, u: f64) -> Result<()> {
+    let r = &s.raster;
     let plot = chart.plotting_area();
-    for rect in &rects {
-        plot.draw(rect).map_err(plot_err)?;
+    for (i0, i1, j0, j1, c) in seabed_blocks(s) {
+        let a = ((r.x0 + r.dx * i0 as f64) / u, (r.y0 + r.dy * j0 as f64) / u);
+        let b = ((r.x0 + r.dx * i1 as f64) / u, (r.y0 + r.dy * j1 as f64) / u);
+        plot.draw(&Rectangle::new([a, b], style::fill(c))).map_err(plot_err)?;
     }
 
     let scaled = |line: Vec<(f64, f64)>| line.into_iter().map(|(x, y)| (x / u, y / u)).collect::<Vec<_>>();
@@ -356,46 +390,58 @@ fn circle_points(c: Vec2, r: f64, u: f64) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// Outline polygon (data units) and horizontal centre (metres) of an obstacle at `time`.
+fn obstacle_outline(o: &Obstacle, time: f64, u: f64) -> Option<(Vec<(f64, f64)>, Vec2)> {
+    let (outline, centre) = match o.shape_at(time) {
+        Shape::Sphere { center, radius } => (circle_points(center.truncate(), radius, u), center.truncate()),
+        Shape::Cylinder { center, radius, .. } | Shape::Circle { center, radius } => {
+            (circle_points(center, radius, u), center)
+        }
+        Shape::Box { min, max } => {
+            let (a, b) = (min / u, max / u);
+            (vec![(a.x, a.y), (b.x, a.y), (b.x, b.y), (a.x, b.y), (a.x, a.y)], (min.truncate() + max.truncate()) * 0.5)
+        }
+    };
+    outline.iter().all(|p| p.0.is_finite() && p.1.is_finite()).then_some((outline, centre))
+}
+
 fn draw_obstacles<DB: DrawingBackend>(chart: &Chart<DB>, world: &World, time: f64, u: f64) -> Result<()> {
     let plot = chart.plotting_area();
-    for o in &world.obstacles {
-        let (outline, centre) = match o.shape_at(time) {
-            Shape::Sphere { center, radius } => (circle_points(center.truncate(), radius, u), center.truncate()),
-            Shape::Cylinder { center, radius, .. } | Shape::Circle { center, radius } => {
-                (circle_points(center, radius, u), center)
-            }
-            Shape::Box { min, max } => {
-                let (a, b) = (min / u, max / u);
-                (
-                    vec![(a.x, a.y), (b.x, a.y), (b.x, b.y), (a.x, b.y), (a.x, a.y)],
-                    (min.truncate() + max.truncate()) * 0.5,
-                )
-            }
-        };
-        if outline.iter().any(|p| !(p.0.is_finite() && p.1.is_finite())) {
-            continue;
-        }
+    for (outline, _) in world.obstacles.iter().filter_map(|o| obstacle_outline(o, time, u)) {
         plot.draw(&Polygon::new(outline.clone(), style::fill(style::OBSTACLE_FILL))).map_err(plot_err)?;
         plot.draw(&PathElement::new(outline, style::line(style::OBSTACLE_EDGE, 1))).map_err(plot_err)?;
+    }
+    Ok(())
+}
+
+/// Velocity arrows of moving obstacles with their speed, drawn above paths and currents so the
+/// labels stay legible.
+fn draw_obstacle_motion<DB: DrawingBackend>(chart: &Chart<DB>, world: &World, time: f64, u: f64) -> Result<()> {
+    let px = chart.plotting_area().strip_coord_spec();
+    for o in &world.obstacles {
         let v = o.velocity.truncate();
         let speed = v.length();
-        if speed > 0.0 && speed.is_finite() {
-            // A fixed on-screen length: the arrow says where it is heading, the label how fast.
-            let from = to_px(chart, centre.x / u, centre.y / u);
-            let dir = v / speed;
-            let to = (from.0 + (dir.x * 34.0).round() as i32, from.1 - (dir.y * 34.0).round() as i32);
-            let px = plot.strip_coord_spec();
-            style::draw_arrow_px(&px, from, to, style::OBSTACLE_EDGE, 2)?;
-            let text = format!("{} m/s", style::fmt_sig(speed));
-            let (tw, th) = (style::text_width(&text, 11.0).round() as i32 + 6, 15);
-            // Centred a little beyond the tip, along the arrow, so it covers neither.
-            let reach = 6.0 + (dir.x.abs() * tw as f64 / 2.0).max(dir.y.abs() * th as f64 / 2.0);
-            let bx = to.0 + (dir.x * reach).round() as i32 - tw / 2;
-            let by = to.1 - (dir.y * reach).round() as i32 - th / 2;
-            px.draw(&Rectangle::new([(bx, by), (bx + tw, by + th)], style::fill(WHITE.mix(0.8)))).map_err(plot_err)?;
-            let centre = Pos::new(HPos::Center, VPos::Center);
-            px.draw(&Text::new(text, (bx + tw / 2, by + th / 2), style::font(11.0).pos(centre))).map_err(plot_err)?;
+        let Some((_, centre)) = obstacle_outline(o, time, u) else { continue };
+        if !(speed > 0.0 && speed.is_finite()) {
+            continue;
         }
+        // A fixed on-screen length: the arrow says where it is heading, the label how fast.
+        let from = to_px(chart, centre.x / u, centre.y / u);
+        let dir = v / speed;
+        let to = (from.0 + (dir.x * 34.0).round() as i32, from.1 - (dir.y * 34.0).round() as i32);
+        style::draw_arrow_px(&px, from, to, style::OBSTACLE_EDGE, 2)?;
+        let text = format!("{} m/s", style::fmt_sig(speed));
+        let (tw, th) = (style::text_width(&text, 11.0).round() as i32 + 10, 15);
+        // Centred just beyond the tip, along the arrow, so it covers neither tip nor shaft.
+        let gap = 4.0;
+        let reach_x = if dir.x.abs() > 1e-9 { (tw as f64 / 2.0 + gap) / dir.x.abs() } else { f64::INFINITY };
+        let reach_y = if dir.y.abs() > 1e-9 { (th as f64 / 2.0 + gap) / dir.y.abs() } else { f64::INFINITY };
+        let reach = reach_x.min(reach_y);
+        let bx = to.0 + (dir.x * reach).round() as i32 - tw / 2;
+        let by = to.1 - (dir.y * reach).round() as i32 - th / 2;
+        px.draw(&Rectangle::new([(bx, by), (bx + tw, by + th)], style::fill(WHITE.mix(0.85)))).map_err(plot_err)?;
+        let centre = Pos::new(HPos::Center, VPos::Center);
+        px.draw(&Text::new(text, (bx + tw / 2, by + th / 2), style::font(11.0).pos(centre))).map_err(plot_err)?;
     }
     Ok(())
 }
@@ -503,6 +549,12 @@ fn draw_endpoints<DB: DrawingBackend>(
 
 /// Labelled ticks of the colour bar: the contour levels, and the coastline level.
 fn colorbar_ticks(s: &Seabed) -> Vec<f64> {
+    if s.levels.is_empty() {
+        // A (nearly) flat seabed has no contours; its extremes are all there is to say.
+        let mut ends = vec![s.z_min, s.z_max];
+        ends.dedup();
+        return ends;
+    }
     let mut ticks: Vec<f64> = s.levels.clone();
     if s.has_land() {
         ticks.push(0.0);
@@ -519,6 +571,21 @@ fn label_every(s: &Seabed, len: f64, min_gap: f64) -> usize {
     (min_gap / px_per_step).ceil().max(1.0) as usize
 }
 
+/// Pixel runs [k0, k1) of one colour along a colour bar `len` pixels long, where pixel k shows
+/// the elevation `z_at((k + 0.5) / len)`; runs keep the bar to a few dozen SVG elements.
+fn gradient_runs(len: u32, z_at: impl Fn(f64) -> f64, s: &Seabed) -> Vec<(i32, i32, RGBColor)> {
+    let n = len.max(2) as i32;
+    let mut runs: Vec<(i32, i32, RGBColor)> = Vec::new();
+    for k in 0..n {
+        let c = style::elevation_color(z_at((k as f64 + 0.5) / n as f64), s.z_min, s.z_max);
+        match runs.last_mut() {
+            Some(last) if last.2 == c => last.1 = k + 1,
+            _ => runs.push((k, k + 1, c)),
+        }
+    }
+    runs
+}
+
 /// Vertical colour bar of the seabed shading, labelled at the contour levels.
 fn draw_colorbar_vertical<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, s: &Seabed) -> Result<()> {
     let (_, h) = area.dim_in_pixel();
@@ -531,11 +598,8 @@ fn draw_colorbar_vertical<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, s: 
             h as i32 / 2
         }
     };
-    let n = h.max(2) as usize;
-    for k in 0..n {
-        let z = s.z_max - span * (k as f64 + 0.5) / n as f64;
-        let c = style::elevation_color(z, s.z_min, s.z_max);
-        area.draw(&Rectangle::new([(bar_x0, k as i32), (bar_x1, k as i32 + 1)], style::fill(c))).map_err(plot_err)?;
+    for (k0, k1, c) in gradient_runs(h, |t| s.z_max - span * t, s) {
+        area.draw(&Rectangle::new([(bar_x0, k0), (bar_x1, k1)], style::fill(c))).map_err(plot_err)?;
     }
     area.draw(&Rectangle::new([(bar_x0, 0), (bar_x1, h as i32 - 1)], style::line(BLACK, 1))).map_err(plot_err)?;
     let every = label_every(s, h as f64, 16.0);
@@ -565,11 +629,8 @@ fn draw_colorbar_horizontal<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, s
             bar_w as i32 / 2
         }
     };
-    let n = bar_w.max(2) as usize;
-    for k in 0..n {
-        let z = s.z_min + span * (k as f64 + 0.5) / n as f64;
-        let c = style::elevation_color(z, s.z_min, s.z_max);
-        area.draw(&Rectangle::new([(k as i32, bar_y0), (k as i32 + 1, bar_y1)], style::fill(c))).map_err(plot_err)?;
+    for (k0, k1, c) in gradient_runs(bar_w, |t| s.z_min + span * t, s) {
+        area.draw(&Rectangle::new([(k0, bar_y0), (k1, bar_y1)], style::fill(c))).map_err(plot_err)?;
     }
     area.draw(&Rectangle::new([(0, bar_y0), (bar_w as i32 - 1, bar_y1)], style::line(BLACK, 1))).map_err(plot_err)?;
     let ticks = colorbar_ticks(s);
@@ -588,4 +649,37 @@ fn draw_colorbar_horizontal<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, s
     area.draw(&Text::new("seabed elevation (m)", (bar_w as i32 + 14, (bar_y0 + bar_y1) / 2), title))
         .map_err(plot_err)?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seabed_blocks_paint_every_cell_its_own_colour() {
+        let raster = Raster::sample(0.0, 0.0, 10.0, 8.0, 21, 17, |x, y| {
+            -500.0 + 300.0 * (-((x - 5.0).powi(2) + (y - 4.0).powi(2)) / 2.0).exp()
+        });
+        let (z_min, z_max) = raster.finite_range().unwrap();
+        let s = Seabed { raster, z_min, z_max, levels: vec![], step: 100.0 };
+        let (cx, cy) = (20, 16);
+        // Paint the blocks in order (background first) and compare with each cell's colour.
+        let mut painted = vec![None; cx * cy];
+        let blocks = seabed_blocks(&s);
+        for &(i0, i1, j0, j1, c) in &blocks {
+            for j in j0..j1 {
+                for i in i0..i1 {
+                    painted[j * cx + i] = Some(c);
+                }
+            }
+        }
+        let r = &s.raster;
+        for j in 0..cy {
+            for i in 0..cx {
+                let z = 0.25 * (r.at(i, j) + r.at(i + 1, j) + r.at(i, j + 1) + r.at(i + 1, j + 1));
+                assert_eq!(painted[j * cx + i], Some(style::elevation_color(z, z_min, z_max)), "cell ({i}, {j})");
+            }
+        }
+        assert!(blocks.len() < cx * cy / 2, "{} blocks for {} cells", blocks.len(), cx * cy);
+    }
 }

@@ -95,7 +95,7 @@ pub fn draw_profile<DB: DrawingBackend>(
             Swatch::Fill { color: style::SEABED.to_rgba(), edge: Some(style::SEABED_LINE) },
         ));
         if seabeds.iter().filter(|s| s.len() >= 2).count() > 1 {
-            legend.push(LegendEntry::new("seabed under the others (dashed)", Swatch::Dashed(style::MUTED.to_rgba())));
+            legend.push(LegendEntry::new("seabed under others", Swatch::Dashed(style::MUTED.to_rgba())));
         }
     }
     let surface = lo < 0.0 && hi > 0.0;

@@ -70,9 +70,9 @@ pub fn bold(px: f64) -> TextStyle<'static> {
 }
 
 /// Rough width of `text` in pixels at `px`, for layout only (DejaVu Sans averages about
-/// 0.58 em per character).
+/// 0.55 em per character).
 pub fn text_width(text: &str, px: f64) -> f64 {
-    text.chars().count() as f64 * px * 0.58
+    text.chars().count() as f64 * px * 0.55
 }
 
 pub fn line(color: impl Color, width: u32) -> ShapeStyle {
@@ -205,13 +205,13 @@ pub fn elevation_color(z: f64, z_min: f64, z_max: f64) -> RGBColor {
     ];
     const LAND: [(f64, [f64; 3]); 2] = [(0.0, [236.0, 219.0, 170.0]), (1.0, [176.0, 136.0, 80.0])];
     // Quantised so neighbouring raster cells share colours and merge into fewer SVG rects.
-    let quant = |t: f64| (t.clamp(0.0, 1.0) * 64.0).round() / 64.0;
+    let quant = |t: f64| (t.clamp(0.0, 1.0) * 40.0).round() / 40.0;
     if z > 0.0 {
         let t = if z_max > 0.0 { quant(z / z_max) } else { 0.0 };
         ramp(&LAND, t)
     } else {
         let top = z_max.min(0.0);
-        let t = if top > z_min { quant((z - z_min) / (top - z_min)) } else { 1.0 };
+        let t = if top > z_min { quant((z - z_min) / (top - z_min)) } else { 0.5 };
         ramp(&WATER, t)
     }
 }

@@ -28,26 +28,124 @@ const CLEARANCE_TOL: f64 = 1e-6;
 const HIT_FLOOR: f64 = 1e-9;
 const CLEARANCE_FLOOR: f64 = 1e-12;
 
+/// A stretch [s0, s1] of the segment with its end points, their clearance g = z - h and smooth
+/// clearance u = z - h_smooth (u <= g, see [`Terrain::elevation_with_smooth`]), and a lower
+/// bound of g over the stretch.
 #[derive(Clone, Copy)]
 struct Piece {
     s0: f64,
     s1: f64,
     p0: Vec3,
     p1: Vec3,
-    /// Lower bound of the vertical clearance on the piece (clearance search only).
+    g0: f64,
+    g1: f64,
+    u0: f64,
+    u1: f64,
     lower: f64,
+    /// The piece's exact minimum of g, when the terrain could give it (then `lower` is it minus
+    /// the rounding slack and the piece needs no splitting); NaN otherwise.
+    exact: f64,
+}
+
+/// One segment against the terrain: sampling and lower bounds.
+struct Probe<'a> {
+    terrain: &'a Terrain,
+    a: Vec3,
+    b: Vec3,
+    /// Upper bound of d^2 u / ds^2 = -d^2 h_smooth / ds^2 in the segment parameter s in [0, 1]
+    /// (the terrain's concavity bound times the squared horizontal length), if it has one.
+    concavity: Option<f64>,
+    /// Allowance for rounding in the second-order bound, which works with differences of
+    /// sampled values.
+    slack: f64,
+}
+
+impl<'a> Probe<'a> {
+    fn new(terrain: &'a Terrain, a: Vec3, b: Vec3) -> Self {
+        let hlen = (b - a).truncate().length();
+        let concavity = terrain.concavity_bound().map(|k| k * hlen * hlen).filter(|m| m.is_finite());
+        let slack = 64.0 * f64::EPSILON * (a.z.abs().max(b.z.abs()) + terrain.vertical_scale());
+        Self { terrain, a, b, concavity, slack }
+    }
+
+    /// The point at parameter s (exact at both ends), its clearance and smooth clearance.
+    #[inline]
+    fn sample(&self, s: f64) -> (Vec3, f64, f64) {
+        let p = self.a * (1.0 - s) + self.b * s;
+        let (h, h_smooth) = self.terrain.elevation_with_smooth(p.x, p.y);
+        (p, p.z - h, p.z - h_smooth)
+    }
+
+    /// The piece between two samples, with a lower bound of g over it that is at least `need`
+    /// if it can be shown cheaply. Grids settle pieces within 2 x 2 cells exactly
+    /// ([`Terrain::exact_min_clearance`]). Otherwise two bounds: where the terrain has a concavity bound M
+    /// (so u'' <= M), the second-order g(s) >= u(s) >= chord(s) - M/2 (s - s0)(s1 - s),
+    /// minimised in closed form,
+    /// sharp along stretches that follow the seabed (its error shrinks with the square of the
+    /// piece length) and free of exp calls; then, only if that falls short of `need`, the
+    /// rectangle bound (lowest end against the highest seabed under the piece), sharp far from
+    /// the seabed.
+    #[inline]
+    fn piece(
+        &self,
+        s0: f64,
+        s1: f64,
+        (p0, g0, u0): (Vec3, f64, f64),
+        (p1, g1, u1): (Vec3, f64, f64),
+        need: f64,
+    ) -> Piece {
+        if let Some(m) = self.terrain.exact_min_clearance(self.a, self.b, s0, s1) {
+            return Piece { s0, s1, p0, p1, g0, g1, u0, u1, lower: m - self.slack, exact: m };
+        }
+        let mut lower = f64::NEG_INFINITY;
+        if let Some(m) = self.concavity {
+            lower = chord_lower_bound(u0, u1, s1 - s0, m) - self.slack;
+        }
+        if !(lower >= need) {
+            let lo = p0.min(p1);
+            let hi = p0.max(p1);
+            lower = lower.max(lo.z - self.terrain.max_elevation_in(lo.x, lo.y, hi.x, hi.y));
+        }
+        Piece { s0, s1, p0, p1, g0, g1, u0, u1, lower, exact: f64::NAN }
+    }
+
+    /// The two halves of `piece` (bounds computed against `need`) and the sample at its middle,
+    /// or `None` when the piece is too short to split in floating point.
+    #[inline]
+    fn split(&self, piece: &Piece, need: f64) -> Option<(Piece, Piece, f64)> {
+        let sm = 0.5 * (piece.s0 + piece.s1);
+        if !(sm > piece.s0 && sm < piece.s1) {
+            return None;
+        }
+        let mid = self.sample(sm);
+        let left = self.piece(piece.s0, sm, (piece.p0, piece.g0, piece.u0), mid, need);
+        let right = self.piece(sm, piece.s1, mid, (piece.p1, piece.g1, piece.u1), need);
+        Some((left, right, mid.1))
+    }
+}
+
+/// Minimum over t in [0, w] of g0 + (g1 - g0) t / w - m/2 t (w - t): the least value a
+/// function with second derivative <= m can take between samples g0 at 0 and g1 at w (the
+/// difference between the function and this curve is concave and 0 at both ends).
+#[inline]
+fn chord_lower_bound(g0: f64, g1: f64, w: f64, m: f64) -> f64 {
+    if !(m > 0.0 && w > 0.0) {
+        return g0.min(g1);
+    }
+    let t = (0.5 * w - (g1 - g0) / (m * w)).clamp(0.0, w);
+    g0 + (g1 - g0) * (t / w) - 0.5 * m * t * (w - t)
 }
 
 impl World {
     /// Does any point of segment a -> b come within `safety` (vertically) of the seabed?
     ///
-    /// Depth-first bisection: a piece is clear when min z over it minus the terrain bound over
-    /// its horizontal box is at least `safety`; a sampled point below `safety` is a hit; a piece
-    /// whose horizontal length falls below the resolution without being proven clear counts as
-    /// a hit. The resolution is 1e-3 of the terrain's feature length
-    /// ([`Terrain::feature_length`]: min(dx, dy) for grids, the narrowest sigma for peaks), and
-    /// never below 1e-9 of the domain's horizontal size (or of the segment, if longer).
-    /// No allocation. Non-finite endpoints or safety count as a hit.
+    /// Depth-first bisection: a piece is clear when a lower bound of z - h over it is at least
+    /// `safety` (see `Probe::piece`: rectangle bound, and a second-order bound for peaks); a
+    /// sampled point below `safety` is a hit; a piece whose horizontal length falls below the
+    /// resolution without being proven clear counts as a hit. The resolution is 1e-3 of the
+    /// terrain's feature length ([`Terrain::feature_length`]: min(dx, dy) for grids, the
+    /// narrowest sigma for peaks), and never below 1e-9 of the domain's horizontal size (or of
+    /// the segment, if longer). No allocation. Non-finite endpoints or safety count as a hit.
     pub fn segment_hits_terrain(&self, a: Vec3, b: Vec3, safety: f64) -> bool {
         let t = &self.terrain;
         if matches!(t, Terrain::None) {
@@ -56,30 +154,44 @@ impl World {
         if !(a.is_finite() && b.is_finite()) || safety.is_nan() {
             return true;
         }
-        let g = |p: Vec3| p.z - t.elevation(p.x, p.y);
-        if !(g(a) >= safety && g(b) >= safety) {
+        // One rectangle bound over the whole segment settles the usual case of a segment well
+        // above the seabed; only then are the end points worth evaluating.
+        let lo = a.min(b);
+        let hi = a.max(b);
+        let root_rect = lo.z - t.max_elevation_in(lo.x, lo.y, hi.x, hi.y);
+        if root_rect >= safety {
+            return false;
+        }
+        let probe = Probe::new(t, a, b);
+        let (sa, sb) = (probe.sample(0.0), probe.sample(1.0));
+        if !(sa.1 >= safety && sb.1 >= safety) {
             return true;
         }
         let hlen = (b - a).truncate().length();
         let res = self.terrain_resolution(hlen, HIT_RESOLUTION, HIT_FLOOR);
-        let mut stack = [Piece { s0: 0.0, s1: 1.0, p0: a, p1: b, lower: 0.0 }; STACK];
+        // The root's rectangle bound is known already; a need of -inf asks only for the rest.
+        let mut root = probe.piece(0.0, 1.0, sa, sb, f64::NEG_INFINITY);
+        root.lower = root.lower.max(root_rect);
+        let mut stack = [root; STACK];
         let mut n = 1;
         while n > 0 {
             n -= 1;
-            let Piece { s0, s1, p0, p1, .. } = stack[n];
-            if piece_lower_bound(t, p0, p1) >= safety {
+            let piece = stack[n];
+            if piece.lower >= safety {
                 continue;
             }
-            let sm = 0.5 * (s0 + s1);
-            if (s1 - s0) * hlen <= res || !(sm > s0 && sm < s1) || n + 2 > STACK {
+            // An exact minimum below the safety distance (or within rounding of it) is a hit.
+            if !piece.exact.is_nan() || (piece.s1 - piece.s0) * hlen <= res || n + 2 > STACK {
                 return true;
             }
-            let pm = point_at(a, b, sm);
-            if !(g(pm) >= safety) {
+            let Some((left, right, g_mid)) = probe.split(&piece, safety) else { return true };
+            if !(g_mid >= safety) {
                 return true;
             }
-            stack[n] = Piece { s0: sm, s1, p0: pm, p1, lower: 0.0 };
-            stack[n + 1] = Piece { s0, s1: sm, p0, p1: pm, lower: 0.0 };
+            // The more suspicious half on top: a hit, if any, is found sooner.
+            let (first, second) = if left.lower <= right.lower { (left, right) } else { (right, left) };
+            stack[n] = second;
+            stack[n + 1] = first;
             n += 2;
         }
         false
@@ -89,13 +201,13 @@ impl World {
     /// +inf without seabed).
     ///
     /// Branch and bound over the same pieces as [`World::segment_hits_terrain`]: sampled points
-    /// give upper bounds of the minimum, `min z - max_elevation_in` lower bounds, and a piece is
-    /// dropped once its lower bound is within the tolerance (1e-6 of
-    /// [`Terrain::vertical_scale`]) of the best sample. The value returned is the least lower
-    /// bound of the settled pieces (or the best sample, if smaller), so it never overstates the
-    /// clearance and understates it by at most the tolerance, except in pieces stopped at the
-    /// resolution (1e-6 of the feature length, floor 1e-12 of the domain), whose bound is used
-    /// as is. NaN for non-finite endpoints.
+    /// give upper bounds of the minimum, the piece bounds lower bounds, and a piece is dropped
+    /// once its lower bound is within the tolerance (1e-6 of [`Terrain::vertical_scale`]) of
+    /// the best sample. The value returned is the least lower bound of the settled pieces (or
+    /// the best sample, if smaller), so it never overstates the clearance and understates it by
+    /// at most the tolerance, except in pieces stopped at the resolution (1e-6 of the feature
+    /// length, floor 1e-12 of the domain), whose bound is used as is. NaN for non-finite
+    /// endpoints.
     pub fn segment_terrain_clearance(&self, a: Vec3, b: Vec3) -> f64 {
         let t = &self.terrain;
         if matches!(t, Terrain::None) {
@@ -104,31 +216,36 @@ impl World {
         if !(a.is_finite() && b.is_finite()) {
             return f64::NAN;
         }
-        let g = |p: Vec3| p.z - t.elevation(p.x, p.y);
-        let mut upper = g(a).min(g(b));
+        let probe = Probe::new(t, a, b);
+        let (sa, sb) = (probe.sample(0.0), probe.sample(1.0));
+        let mut upper = sa.1.min(sb.1);
         let tol = CLEARANCE_TOL * t.vertical_scale();
         let hlen = (b - a).truncate().length();
         let res = self.terrain_resolution(hlen, CLEARANCE_RESOLUTION, CLEARANCE_FLOOR);
         let mut settled = f64::INFINITY;
-        let first = Piece { s0: 0.0, s1: 1.0, p0: a, p1: b, lower: piece_lower_bound(t, a, b) };
-        let mut stack = [first; STACK];
+        let mut stack = [probe.piece(0.0, 1.0, sa, sb, upper - tol); STACK];
         let mut n = 1;
         while n > 0 {
             n -= 1;
-            let Piece { s0, s1, p0, p1, lower } = stack[n];
-            if lower >= upper - tol {
-                settled = settled.min(lower);
+            let piece = stack[n];
+            if !piece.exact.is_nan() {
+                upper = upper.min(piece.exact);
+                settled = settled.min(piece.lower);
                 continue;
             }
-            let sm = 0.5 * (s0 + s1);
-            if (s1 - s0) * hlen <= res || !(sm > s0 && sm < s1) || n + 2 > STACK {
-                settled = settled.min(lower);
+            if piece.lower >= upper - tol {
+                settled = settled.min(piece.lower);
                 continue;
             }
-            let pm = point_at(a, b, sm);
-            upper = upper.min(g(pm));
-            let left = Piece { s0, s1: sm, p0, p1: pm, lower: piece_lower_bound(t, p0, pm) };
-            let right = Piece { s0: sm, s1, p0: pm, p1, lower: piece_lower_bound(t, pm, p1) };
+            if (piece.s1 - piece.s0) * hlen <= res || n + 2 > STACK {
+                settled = settled.min(piece.lower);
+                continue;
+            }
+            let Some((left, right, g_mid)) = probe.split(&piece, upper - tol) else {
+                settled = settled.min(piece.lower);
+                continue;
+            };
+            upper = upper.min(g_mid);
             // Explore the more promising half first: it lowers `upper` sooner and prunes more.
             let (first, second) = if left.lower <= right.lower { (left, right) } else { (right, left) };
             stack[n] = second;
@@ -147,21 +264,6 @@ impl World {
         let base = self.terrain.feature_length().map_or(0.0, |f| rel * f);
         base.max(floor * scale)
     }
-}
-
-/// The segment point at parameter s, exact at both ends.
-#[inline]
-fn point_at(a: Vec3, b: Vec3, s: f64) -> Vec3 {
-    a * (1.0 - s) + b * s
-}
-
-/// Lower bound of z - h over the piece p0 -> p1: its lowest end against the highest seabed in
-/// its horizontal bounding box.
-#[inline]
-fn piece_lower_bound(t: &Terrain, p0: Vec3, p1: Vec3) -> f64 {
-    let lo = p0.min(p1);
-    let hi = p0.max(p1);
-    lo.z - t.max_elevation_in(lo.x, lo.y, hi.x, hi.y)
 }
 
 #[cfg(test)]
@@ -243,5 +345,154 @@ mod tests {
         assert!((c - 10.0).abs() < 1e-6 * 50.0 && c <= 10.0, "{c}");
         assert!(!w.segment_hits_terrain(a, b, 9.99));
         assert!(w.segment_hits_terrain(a, b, 10.01));
+    }
+}
+
+#[cfg(test)]
+mod tmp_bench {
+    use super::*;
+    use crate::geom::Aabb;
+    use crate::world::terrain::{GaussianPeaks, Peak};
+
+    #[test]
+    fn tmp_bench_terrain() {
+        let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, 0.0), Vec3::new(50.0, 50.0, 50.0)));
+        let pk = |x, y, h, s| Peak { x, y, height: h, sigma_x: s, sigma_y: s };
+        w.terrain = Terrain::Peaks(GaussianPeaks {
+            base: 0.0,
+            peaks: vec![
+                pk(10.0, 14.0, 40.0, 3.0),
+                pk(16.0, 11.0, 35.0, 3.5),
+                pk(22.0, 13.0, 30.0, 3.0),
+                pk(13.0, 22.0, 45.0, 4.0),
+                pk(20.0, 5.0, 40.0, 3.5),
+            ],
+            ceiling: None,
+        });
+        {
+            let g = crate::world::grid::RegularGrid2::new(0.0, 0.0, 0.5, 0.5, 101, 101, "g").unwrap();
+            let z: Vec<f64> = (0..101 * 101)
+                .map(|k| {
+                    let (i, j) = ((k % 101) as f64 * 0.5, (k / 101) as f64 * 0.5);
+                    w.terrain.elevation(i, j)
+                })
+                .collect();
+            let mut wg = w.clone();
+            wg.terrain = Terrain::Grid(crate::world::terrain::ElevationGrid::new(g, z, "g").unwrap());
+            for zf in [0.0, 1.0] {
+                let pts: Vec<Vec3> = (0..=40)
+                    .map(|i| {
+                        let s = i as f64 / 40.0;
+                        let x = 3.0 + 27.0 * s;
+                        let y = 15.0 - 5.0 * s;
+                        let h = wg.terrain.elevation(x, y);
+                        let z = if zf == 0.0 { 48.0 - 5.0 * s } else { h + 1.5 };
+                        Vec3::new(x, y, z)
+                    })
+                    .collect();
+                let mut best = f64::INFINITY;
+                let mut hits = 0;
+                for _ in 0..20 {
+                    let t0 = std::time::Instant::now();
+                    for _ in 0..1000 {
+                        hits = 0;
+                        for p in pts.windows(2) {
+                            hits += wg.segment_hits_terrain(std::hint::black_box(p[0]), p[1], 0.5) as usize;
+                        }
+                    }
+                    best = best.min(t0.elapsed().as_secs_f64() / 1000.0);
+                }
+                let t0 = std::time::Instant::now();
+                let mut c = 0.0;
+                for p in pts.windows(2) {
+                    c += wg.segment_terrain_clearance(p[0], p[1]);
+                }
+                let ct = t0.elapsed().as_secs_f64();
+                eprintln!(
+                    "grid {zf}: {:.2} us per 40 segments, hits {hits}; clearance 40 segs {:.1} us ({c})",
+                    best * 1e6,
+                    ct * 1e6
+                );
+            }
+        }
+        // Path S=(3,15,40) to E=(30,10,10), 31 segments, going around at z = 45 then down; and one skimming.
+        for (name, zf) in [("high", 0.0), ("skim", 1.0)] {
+            let pts: Vec<Vec3> = (0..=40)
+                .map(|i| {
+                    let s = i as f64 / 40.0;
+                    let x = 3.0 + 27.0 * s;
+                    let y = 15.0 - 5.0 * s;
+                    let h = w.terrain.elevation(x, y);
+                    let z = if zf == 0.0 { 48.0 - 5.0 * s } else { h + 1.5 };
+                    Vec3::new(x, y, z)
+                })
+                .collect();
+            let mut best = f64::INFINITY;
+            let mut hits = 0;
+            for _ in 0..20 {
+                let t0 = std::time::Instant::now();
+                for _ in 0..1000 {
+                    hits = 0;
+                    for p in pts.windows(2) {
+                        hits += w.segment_hits_terrain(std::hint::black_box(p[0]), p[1], 0.5) as usize;
+                    }
+                }
+                best = best.min(t0.elapsed().as_secs_f64() / 1000.0);
+            }
+            let t0 = std::time::Instant::now();
+            let mut c = 0.0;
+            for p in pts.windows(2) {
+                c += w.segment_terrain_clearance(p[0], p[1]);
+            }
+            let ct = t0.elapsed().as_secs_f64();
+            eprintln!(
+                "{name}: {:.2} us per 40 segments, hits {hits}; clearance 40 segs {:.1} us ({c})",
+                best * 1e6,
+                ct * 1e6
+            );
+        }
+    }
+}
+#[cfg(test)]
+mod dbg_repro {
+    use super::*;
+    use crate::geom::Aabb;
+    use crate::world::terrain::{GaussianPeaks, Peak};
+    #[test]
+    fn dbg_repro() {
+        let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -100.0), Vec3::new(100.0, 100.0, 0.0)));
+        w.terrain = Terrain::Peaks(GaussianPeaks {
+            base: -60.0,
+            peaks: vec![Peak {
+                x: 65.87896481289476,
+                y: 77.81147735331447,
+                height: 39.950570924673244,
+                sigma_x: 19.209774888421126,
+                sigma_y: 26.737060334255748,
+            }],
+            ceiling: None,
+        });
+        let (x, y) = (68.50415451613013f64, 86.79957468554876f64);
+        let h = |x: f64, y: f64| w.terrain.elevation(x, y);
+        let e = 1e-5;
+        let rise = (h(x + e, y) - h(x - e, y)) / (2.0 * e);
+        let wv = Vec3::new(1.0, 0.0, rise).normalize();
+        let p = Vec3::new(x, y, h(x, y));
+        let lam = 0.4611945406037709;
+        let a = p - wv * 0.5 * lam;
+        let b = a + wv * 0.5;
+        let c = w.segment_terrain_clearance(a, b);
+        let mut mn = f64::INFINITY;
+        let mut at = 0.0;
+        for k in 0..=2000 {
+            let s = k as f64 / 2000.0;
+            let q = a + (b - a) * s;
+            let g = q.z - h(q.x, q.y);
+            if g < mn {
+                mn = g;
+                at = s;
+            }
+        }
+        eprintln!("clearance {c}, sampled min {mn} at {at}; rise {rise}");
     }
 }

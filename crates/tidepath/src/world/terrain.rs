@@ -6,6 +6,7 @@
 
 use super::grid::RegularGrid2;
 use crate::error::{Error, Result};
+use crate::geom::Vec3;
 
 /// One Gaussian peak: height `h` above the base at (x, y), widths `sigma_x`, `sigma_y`:
 /// h exp(-((x - x_j)/sigma_x)^2 - ((y - y_j)/sigma_y)^2)  (seed 000 eq. 1 with sigma = x_j / k).
@@ -132,14 +133,38 @@ impl GaussianPeaks {
 
     #[inline]
     fn elevation(&self, x: f64, y: f64) -> f64 {
-        let mut z = self.base;
-        for p in &self.peaks {
-            z += p.term(x - p.x, y - p.y);
-        }
+        let z = self.uncapped(x, y);
         match self.ceiling {
             Some(c) => z.min(c),
             None => z,
         }
+    }
+
+    #[inline]
+    fn uncapped(&self, x: f64, y: f64) -> f64 {
+        let mut z = self.base;
+        for p in &self.peaks {
+            z += p.term(x - p.x, y - p.y);
+        }
+        z
+    }
+
+    /// How sharply the uncapped sum can curve downward: an upper bound of minus its second
+    /// derivative along any horizontal unit direction. For one peak, with alpha = w_x / sigma_x
+    /// and beta = w_y / sigma_y, the second derivative of exp(-u^2 - v^2) is
+    /// [4 (u alpha + v beta)^2 - 2 (alpha^2 + beta^2)] exp(-u^2 - v^2), which lies in
+    /// [-2, 4/e] (alpha^2 + beta^2). So a bump (h > 0) curves down by at most 2 h m (over its
+    /// summit) and a dip by at most 4/e |h| m (on its flanks), with m = max(1/sigma_x^2,
+    /// 1/sigma_y^2).
+    fn max_concavity(&self) -> f64 {
+        self.peaks
+            .iter()
+            .map(|p| {
+                let m = (1.0 / (p.sigma_x * p.sigma_x)).max(1.0 / (p.sigma_y * p.sigma_y));
+                let k = if p.height >= 0.0 { 2.0 } else { 4.0 / std::f64::consts::E };
+                k * p.height.abs() * m
+            })
+            .sum()
     }
 
     /// Each term is bounded on its own: a bump is highest at the rectangle point nearest its
@@ -277,7 +302,96 @@ impl ElevationGrid {
     }
 }
 
+impl ElevationGrid {
+    /// The exact minimum of z - h along p(s) = a + (b - a) s, s in [s0, s1], when that stretch
+    /// stays within 2 x 2 cells (after clamping to the grid); `None` otherwise.
+    ///
+    /// Inside one cell the surface is bilinear and the stretch's local coordinates are linear
+    /// in s, so the clearance is a quadratic in s. Cut the stretch where it crosses cell edges
+    /// (or the grid's border, beyond which the field is constant) and take, per cut, the least
+    /// of its ends and the quadratic's vertex, each evaluated as a real point of the segment.
+    /// That settles pieces near the seabed exactly instead of subdividing them to a resolution.
+    fn min_clearance_on(&self, a: Vec3, b: Vec3, s0: f64, s1: f64) -> Option<f64> {
+        let g = &self.grid;
+        let d = b - a;
+        let (cx, cy) = ((g.nx - 1) as f64, (g.ny - 1) as f64);
+        // Raw grid coordinates are fa + fd s along the segment.
+        let (fxa, fxd) = ((a.x - g.x0) / g.dx, d.x / g.dx);
+        let (fya, fyd) = ((a.y - g.y0) / g.dy, d.y / g.dy);
+        let cell_range = |fa: f64, fd: f64, c: f64, n: usize| {
+            let f0 = (fa + fd * s0).clamp(0.0, c);
+            let f1 = (fa + fd * s1).clamp(0.0, c);
+            ((f0.min(f1) as usize).min(n - 2), (f0.max(f1) as usize).min(n - 2))
+        };
+        let (i_lo, i_hi) = cell_range(fxa, fxd, cx, g.nx);
+        let (j_lo, j_hi) = cell_range(fya, fyd, cy, g.ny);
+        if !(i_hi - i_lo <= 1 && j_hi - j_lo <= 1) {
+            return None;
+        }
+        let mut cuts = [0.0f64; 8];
+        cuts[0] = s0;
+        let mut n = 1;
+        for (fa, fd, lines) in [(fxa, fxd, [0.0, cx, (i_lo + 1) as f64]), (fya, fyd, [0.0, cy, (j_lo + 1) as f64])] {
+            if fd != 0.0 {
+                for k in lines {
+                    let s = (k - fa) / fd;
+                    if s > s0 && s < s1 {
+                        cuts[n] = s;
+                        n += 1;
+                    }
+                }
+            }
+        }
+        cuts[n] = s1;
+        n += 1;
+        cuts[1..n - 1].sort_unstable_by(f64::total_cmp);
+        let clearance = |s: f64| {
+            let p = a * (1.0 - s) + b * s;
+            p.z - g.bilinear(&self.z, p.x, p.y)
+        };
+        // Cell index and local coordinate w0 + w1 s along one axis, on a cut holding `mid`.
+        let local = |fa: f64, fd: f64, c: f64, n: usize, mid: f64| {
+            let f = fa + fd * mid;
+            if f <= 0.0 {
+                (0, 0.0, 0.0)
+            } else if f >= c {
+                (n - 2, 1.0, 0.0)
+            } else {
+                let i = (f as usize).min(n - 2);
+                (i, fa - i as f64, fd)
+            }
+        };
+        let mut best = f64::INFINITY;
+        for k in 0..n - 1 {
+            let (lo, hi) = (cuts[k], cuts[k + 1]);
+            best = best.min(clearance(lo)).min(clearance(hi));
+            let mid = 0.5 * (lo + hi);
+            let (i, u0, u1) = local(fxa, fxd, cx, g.nx, mid);
+            let (j, v0, v1) = local(fya, fyd, cy, g.ny, mid);
+            let q = j * g.nx + i;
+            let (z00, z10, z01, z11) = (self.z[q], self.z[q + 1], self.z[q + g.nx], self.z[q + g.nx + 1]);
+            let (bx, cy_, dxy) = (z10 - z00, z01 - z00, z11 - z10 - z01 + z00);
+            // h = z00 + bx u + cy v + dxy u v, so g = z - h has these s and s^2 coefficients.
+            let g1 = d.z - (bx * u1 + cy_ * v1 + dxy * (u0 * v1 + u1 * v0));
+            let g2 = -dxy * u1 * v1;
+            if g2 > 0.0 {
+                best = best.min(clearance((-g1 / (2.0 * g2)).clamp(lo, hi)));
+            }
+        }
+        Some(best)
+    }
+}
+
 impl Terrain {
+    /// The exact minimum of z - h along p(s) = a + (b - a) s for s in [s0, s1], where the
+    /// terrain can give it cheaply (grids, over stretches within 2 x 2 cells); `None` otherwise.
+    pub fn exact_min_clearance(&self, a: Vec3, b: Vec3, s0: f64, s1: f64) -> Option<f64> {
+        match self {
+            Terrain::Grid(g) => g.min_clearance_on(a, b, s0, s1),
+            _ => None,
+        }
+    }
+
     /// Seabed elevation at (x, y); `-inf` when there is no seabed.
     #[inline]
     pub fn elevation(&self, x: f64, y: f64) -> f64 {
@@ -307,6 +421,39 @@ impl Terrain {
             Terrain::None => None,
             Terrain::Peaks(p) => p.min_sigma(),
             Terrain::Grid(g) => Some(g.grid.dx.min(g.grid.dy)),
+        }
+    }
+
+    /// The elevation at (x, y) and the smooth surface that [`Terrain::concavity_bound`]
+    /// applies to, which is never below the elevation: for peaks the sum without the ceiling
+    /// (the cap only lowers the seabed), otherwise the elevation itself.
+    #[inline]
+    pub fn elevation_with_smooth(&self, x: f64, y: f64) -> (f64, f64) {
+        match self {
+            Terrain::Peaks(p) => {
+                let u = p.uncapped(x, y);
+                (p.ceiling.map_or(u, |c| u.min(c)), u)
+            }
+            _ => {
+                let h = self.elevation(x, y);
+                (h, h)
+            }
+        }
+    }
+
+    /// An upper bound of minus the second derivative (per metre squared), along any
+    /// horizontal line, of the smooth surface of [`Terrain::elevation_with_smooth`]: how
+    /// sharply it can curve downward. `None` where there is no such bound (grids have creases
+    /// at cell edges).
+    ///
+    /// Over a stretch of segment the clearance to a surface that curves down by at most K can
+    /// sag below the chord between two samples by at most K/8 times the squared length, so
+    /// segment queries get a second-order lower bound that converges far faster than the
+    /// rectangle bound along stretches that follow the seabed closely.
+    pub fn concavity_bound(&self) -> Option<f64> {
+        match self {
+            Terrain::Peaks(p) => Some(p.max_concavity()),
+            _ => None,
         }
     }
 

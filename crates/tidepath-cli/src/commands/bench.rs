@@ -1,0 +1,130 @@
+use std::path::PathBuf;
+
+use clap::{Args, Subcommand, ValueEnum};
+use tidepath::experiments::compare::{compare_functions, FunctionProblem, RunBudget};
+use tidepath::experiments::output;
+use tidepath::experiments::table::markdown;
+use tidepath::optim::functions::Function;
+use tidepath::Error;
+
+use crate::progress::RunsBar;
+use crate::Outcome;
+
+#[derive(Args)]
+pub struct BenchArgs {
+    #[command(subcommand)]
+    pub what: BenchWhat,
+}
+
+#[derive(Subcommand)]
+pub enum BenchWhat {
+    /// Benchmark functions (Sphere, Rastrigin, ...): the optimizer tests of seeds 000 and 002.
+    Functions(FunctionsArgs),
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub enum RangeKind {
+    /// The standard domain of each function.
+    Standard,
+    /// Seed 002 Table 1 (small ranges).
+    Small,
+    /// Seed 002 Table 3 (wide ranges).
+    Wide,
+}
+
+#[derive(Args)]
+pub struct FunctionsArgs {
+    /// Comma-separated optimizer ids; the first is the reference for the rank-sum marks.
+    #[arg(long, value_delimiter = ',', required = true)]
+    pub algos: Vec<String>,
+    /// Comma-separated functions: sphere, rosenbrock, rastrigin, griewank, ackley, zakharov, easom, trid, quadric.
+    #[arg(long, value_delimiter = ',', required = true)]
+    pub funcs: Vec<String>,
+    /// Dimension (Easom is always 2).
+    #[arg(long, default_value_t = 30)]
+    pub dim: usize,
+    /// Search range.
+    #[arg(long, value_enum, default_value_t = RangeKind::Standard)]
+    pub range: RangeKind,
+    /// Population size for every optimizer (default: each optimizer's own).
+    #[arg(long)]
+    pub population: Option<usize>,
+    /// Evaluations per run.
+    #[arg(long, default_value_t = 60_000)]
+    pub evaluations: u64,
+    /// Runs per pair.
+    #[arg(long, default_value_t = 30)]
+    pub runs: u64,
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Write results.json, runs.csv, convergence.svg and boxplot.svg here.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+}
+
+pub fn run(args: &BenchArgs) -> Result<Outcome, Error> {
+    match &args.what {
+        BenchWhat::Functions(f) => functions(f),
+    }
+}
+
+fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
+    let jobs = crate::jobs(args.jobs)?;
+    if args.dim == 0 {
+        return Err(Error::input("--dim", "must be at least 1, got 0"));
+    }
+    let mut problems = Vec::new();
+    for name in &args.funcs {
+        let function = Function::from_id(name).ok_or_else(|| {
+            Error::input(
+                "--funcs",
+                format!(
+                    "unknown function '{name}' (known: {})",
+                    Function::ALL.iter().map(|f| f.id()).collect::<Vec<_>>().join(", ")
+                ),
+            )
+        })?;
+        let dim = function.fixed_dim().unwrap_or(args.dim);
+        let (lo, hi, tag) = match args.range {
+            RangeKind::Standard => {
+                let (lo, hi) = function.default_range(dim);
+                (lo, hi, "standard")
+            }
+            RangeKind::Small => {
+                let (lo, hi) = function
+                    .small_range()
+                    .ok_or_else(|| Error::input("--range", format!("seed 002 gives no small range for {name}")))?;
+                (lo, hi, "small")
+            }
+            RangeKind::Wide => {
+                let (lo, hi) = function
+                    .wide_range()
+                    .ok_or_else(|| Error::input("--range", format!("seed 002 gives no wide range for {name}")))?;
+                (lo, hi, "wide")
+            }
+        };
+        problems.push(FunctionProblem { function, dim, lower: lo, upper: hi, label: format!("{name}-d{dim}-{tag}") });
+    }
+    let budget = RunBudget {
+        iterations: None,
+        evaluations: Some(args.evaluations),
+        population: args.population,
+        time_limit_s: None,
+    };
+    let bar = RunsBar::new("bench", problems.len() * args.algos.len() * args.runs as usize);
+    let result = compare_functions(&problems, &args.algos, args.runs, args.seed, &budget, jobs, None, &|n| bar.set(n));
+    bar.finish();
+    let c = result?;
+    if let Some(dir) = &args.out {
+        output::write_all(&c, dir, None)?;
+    }
+    println!(
+        "{} runs per pair, {} evaluations each, master seed {}, {:.1} s\n",
+        args.runs, args.evaluations, args.seed, c.total_wall_s
+    );
+    print!("{}", markdown(&c.rows, true));
+    println!("\nMarks: Wilcoxon rank-sum against {} per function (two-sided, alpha 0.05).", args.algos[0]);
+    Ok(Outcome::Success)
+}

@@ -1,0 +1,76 @@
+use std::path::PathBuf;
+
+use clap::Args;
+use tidepath::experiments::compare::{compare_scenario, RunBudget};
+use tidepath::experiments::output;
+use tidepath::experiments::table::markdown;
+use tidepath::scenario;
+use tidepath::Error;
+
+use crate::progress::RunsBar;
+use crate::Outcome;
+
+#[derive(Args)]
+pub struct CompareArgs {
+    /// A built-in scenario name or a scenario TOML file.
+    pub scenario: String,
+    /// Comma-separated planner ids; the first is the reference for the rank-sum marks.
+    #[arg(long, value_delimiter = ',', required = true)]
+    pub planners: Vec<String>,
+    /// Runs per planner.
+    #[arg(long, default_value_t = 30)]
+    pub runs: u64,
+    /// Parallel runs (default: all cores). Results do not depend on it.
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Master seed; run i of planner P uses a seed derived from (seed, scenario, P, i).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Iteration budget per run (overrides the scenario).
+    #[arg(long)]
+    pub iterations: Option<u64>,
+    /// Evaluation budget per run (overrides the scenario).
+    #[arg(long)]
+    pub evaluations: Option<u64>,
+    /// Population size for every planner.
+    #[arg(long)]
+    pub population: Option<usize>,
+    /// Write results.json, runs.csv, convergence.svg, boxplot.svg and paths.svg here.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Also write an OMPL benchmark log (load it with `ompl_benchmark_statistics`).
+    #[arg(long)]
+    pub ompl_log: Option<PathBuf>,
+}
+
+pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
+    let scenario = scenario::load(&args.scenario)?;
+    let jobs = crate::jobs(args.jobs)?;
+    let budget = RunBudget {
+        iterations: args.iterations,
+        evaluations: args.evaluations,
+        population: args.population,
+        time_limit_s: None,
+    };
+    let total = args.planners.len() * args.runs as usize;
+    let bar = RunsBar::new("compare", total);
+    let result = compare_scenario(&scenario, &args.planners, args.runs, args.seed, &budget, jobs, &|n| bar.set(n));
+    bar.finish();
+    let c = result?;
+    if let Some(dir) = &args.out {
+        output::write_all(&c, dir, Some(&scenario))?;
+    }
+    if let Some(log) = &args.ompl_log {
+        output::write_ompl(&c, log)?;
+    }
+    println!(
+        "{} — {} runs per planner, master seed {}, {:.1} s\n",
+        scenario.name, args.runs, args.seed, c.total_wall_s
+    );
+    print!("{}", markdown(&c.rows, false));
+    println!("\nMarks: Wilcoxon rank-sum against {} (two-sided, alpha 0.05): + {} significantly better, ≈ no significant difference, - significantly worse.", args.planners[0], args.planners[0]);
+    if let Some(dir) = &args.out {
+        println!("Wrote {}/{{results.json, runs.csv, convergence.svg, boxplot.svg, paths.svg}}", dir.display());
+    }
+    Ok(Outcome::Success)
+}

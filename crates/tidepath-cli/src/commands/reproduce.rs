@@ -1,0 +1,52 @@
+use std::path::PathBuf;
+
+use clap::Args;
+use tidepath::experiments::reproduce::{paper, reproduce, ClaimVerdict, ReproduceOptions, PAPERS};
+use tidepath::Error;
+
+use crate::progress::RunsBar;
+use crate::Outcome;
+
+#[derive(Args)]
+pub struct ReproduceArgs {
+    /// Which paper's experiments to run (`baselines`; `list` shows all).
+    pub paper: String,
+    /// Runs per planner and problem.
+    #[arg(long, default_value_t = 30)]
+    pub runs: u64,
+    /// Master seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Parallel runs (default: all cores). Results do not depend on it.
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Output folder for REPORT.md, per-experiment results and figures.
+    #[arg(long, default_value = "reproduce")]
+    pub out: PathBuf,
+}
+
+pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
+    if args.paper == "list" {
+        for p in PAPERS {
+            println!("{:<12} {}", p.id, p.title);
+        }
+        return Ok(Outcome::Success);
+    }
+    let paper = paper(&args.paper)?;
+    let opts = ReproduceOptions { runs: args.runs, master_seed: args.seed, jobs: crate::jobs(args.jobs)? };
+    let bar = std::sync::Mutex::new(None::<RunsBar>);
+    let outcomes = reproduce(paper, &opts, &args.out, &|done, total| {
+        let mut b = bar.lock().expect("progress lock");
+        b.get_or_insert_with(|| RunsBar::new(paper.id, total)).set(done);
+    });
+    if let Some(b) = bar.into_inner().expect("progress lock") {
+        b.finish();
+    }
+    let outcomes = outcomes?;
+    for o in &outcomes {
+        let ok = o.claims.iter().filter(|(_, v)| matches!(v, ClaimVerdict::Reproduced { .. })).count();
+        println!("{}: {} of {} claims reproduced", o.title, ok, o.claims.len());
+    }
+    println!("Wrote {}", args.out.join("REPORT.md").display());
+    Ok(Outcome::Success)
+}

@@ -1,0 +1,16 @@
+//! Experiments: many seeded runs of several planners, statistics, tables, plots and logs.
+//!
+//! `runner` executes problems x planners x runs reproducibly in parallel, `compare` builds the
+//! tasks for a scenario or for benchmark functions, `table` computes the per-planner rows the
+//! papers report, `output` writes the files, `reproduce` sets our numbers beside a paper's.
+
+pub mod compare;
+pub mod ompl_log;
+pub mod output;
+pub mod record;
+pub mod reproduce;
+pub mod runner;
+pub mod stats;
+pub mod table;
+
+pub use record::RunRecord;
