@@ -121,7 +121,8 @@ fn color_index(order: &[&str], planner: &str) -> usize {
     order.iter().position(|p| *p == planner).unwrap_or(0)
 }
 
-/// How a cost axis maps values: linear, or log10 with zeros drawn at `zero_at`.
+/// How a cost axis maps values: linear, or log10 with zeros drawn on their own line at
+/// `zero_at`, a decade below every positive cost and separated from them by an axis break.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum CostAxis {
     Linear { lo: f64, hi: f64 },
@@ -137,19 +138,21 @@ impl CostAxis {
         let has_zero = finite.contains(&0.0);
         if lo >= 0.0 && wants_log_scale(finite.iter().copied().filter(|v| *v > 0.0)) {
             let min_pos = finite.iter().copied().filter(|v| *v > 0.0).fold(f64::INFINITY, f64::min);
-            let mut a = 10f64.powf(min_pos.log10().floor());
-            // A zero needs its own place below every positive cost, or it would look like one.
-            if has_zero {
-                a /= 10.0;
-            }
+            let floor = min_pos.log10().floor();
             let b = 10f64.powf(hi.log10().ceil());
-            return Some(CostAxis::Log { lo: a, hi: b, zero_at: has_zero.then_some(a) });
+            if has_zero {
+                // The zero line sits a third of a decade above the bottom so it is not hidden
+                // by the x axis.
+                let z = 10f64.powf(floor - 1.0);
+                return Some(CostAxis::Log { lo: 10f64.powf(floor - 1.35), hi: b, zero_at: Some(z) });
+            }
+            return Some(CostAxis::Log { lo: 10f64.powf(floor), hi: b, zero_at: None });
         }
         let pad = if hi > lo { (hi - lo) * 0.05 } else { lo.abs().max(1.0) * 0.1 };
         Some(CostAxis::Linear { lo: lo - pad, hi: hi + pad })
     }
 
-    /// The value to draw for cost `v`: zeros move to the floor of a log axis.
+    /// The value to draw for cost `v`: zeros move to their line on a log axis.
     fn map(&self, v: f64) -> f64 {
         match *self {
             CostAxis::Log { zero_at: Some(z), .. } if v == 0.0 => z,
@@ -157,15 +160,52 @@ impl CostAxis {
         }
     }
 
+    fn zero_at(&self) -> Option<f64> {
+        match *self {
+            CostAxis::Log { zero_at, .. } => zero_at,
+            CostAxis::Linear { .. } => None,
+        }
+    }
+
     fn desc(&self, what: &str) -> String {
         match *self {
             CostAxis::Linear { .. } => what.to_string(),
             CostAxis::Log { zero_at: None, .. } => format!("{what} (log scale)"),
-            CostAxis::Log { zero_at: Some(z), .. } => {
-                format!("{what} (log scale; 0 drawn at {})", style::fmt_sig(z))
-            }
+            CostAxis::Log { zero_at: Some(_), .. } => format!("{what} (log scale, 0 below break)"),
         }
     }
+
+    /// Tick labels: powers of ten from 1e4 up as "1e4" rather than "10000", so labels of a
+    /// many-decade axis have similar widths; the zero line's tick is labelled by
+    /// [`draw_zero_tick`] instead.
+    fn tick_label(&self, v: f64) -> String {
+        if self.zero_at().is_some_and(|z| v < z * 3.0) {
+            return String::new();
+        }
+        if (9_999.5..1e5).contains(&v.abs()) {
+            format!("{v:.1e}").replace(".0e", "e")
+        } else {
+            style::fmt_sig(v)
+        }
+    }
+}
+
+/// Labels the zero line of a log axis "0" and breaks the y axis above it, since the distance
+/// from 0 to the smallest positive cost is not to scale. `axis_x` and `zero_y` are pixels of
+/// `area`: the plot's left edge and the zero line.
+fn draw_zero_tick<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, axis_x: i32, zero_y: i32, gap: i32) -> Result<()> {
+    let text = style::font(style::TICK_PX).pos(Pos::new(HPos::Right, VPos::Center));
+    area.draw(&Text::new("0", (axis_x - 10, zero_y), text)).map_err(plot_err)?;
+    area.draw(&PathElement::new(vec![(axis_x - 6, zero_y), (axis_x - 1, zero_y)], style::line(BLACK, 1)))
+        .map_err(plot_err)?;
+    // The break: a gap in the axis line between two slashes, halfway to the next decade.
+    let y = zero_y - (gap / 2).clamp(5, 14);
+    area.draw(&Rectangle::new([(axis_x - 4, y - 3), (axis_x + 2, y + 3)], style::fill(WHITE))).map_err(plot_err)?;
+    for dy in [-3, 3] {
+        area.draw(&PathElement::new(vec![(axis_x - 6, y + dy + 2), (axis_x + 4, y + dy - 2)], style::line(BLACK, 1)))
+            .map_err(plot_err)?;
+    }
+    Ok(())
 }
 
 /// A history with its gaps filled the way a best-so-far curve means them: before the first
@@ -219,13 +259,31 @@ fn figure_size(n: usize, header_h: u32) -> (u32, u32, (u32, u32)) {
     (cols as u32 * panel.0 + 2 * MARGIN, header_h + rows as u32 * panel.1 + MARGIN, panel)
 }
 
-/// Title, shared legend and an explanatory note; returns the height they take at `width`.
-fn header_height(legend: &[LegendEntry], width: u32) -> u32 {
-    TITLE_H + style::legend_height(legend, legend_width(width)) + 22
+const NOTE_LINE_H: u32 = 18;
+
+/// Height of the title, shared legend and explanatory note at figure width `width`.
+fn header_height(legend: &[LegendEntry], note: &str, width: u32) -> u32 {
+    let lines = wrap(note, legend_width(width) as f64, style::LEGEND_PX).len() as u32;
+    TITLE_H + style::legend_height(legend, legend_width(width)) + lines * NOTE_LINE_H + 6
 }
 
 fn legend_width(width: u32) -> u32 {
     width.saturating_sub(2 * MARGIN + LEGEND_INDENT)
+}
+
+/// Splits `text` into lines no wider than `width` pixels at `px`, at spaces.
+fn wrap(text: &str, width: f64, px: f64) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(line) if style::text_width(&format!("{line} {word}"), px) <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
 }
 
 fn draw_header<DB: DrawingBackend>(
@@ -242,7 +300,10 @@ fn draw_header<DB: DrawingBackend>(
     let legend_area = root.clone().shrink((x0, TITLE_H as i32), (legend_width(w), legend_h.max(1)));
     style::draw_legend(&legend_area, legend)?;
     let note_style = style::font(style::LEGEND_PX).color(&style::MUTED).pos(Pos::new(HPos::Left, VPos::Center));
-    root.draw(&Text::new(note.to_string(), (x0, (TITLE_H + legend_h) as i32 + 10), note_style)).map_err(plot_err)?;
+    for (k, line) in wrap(note, legend_width(w) as f64, style::LEGEND_PX).into_iter().enumerate() {
+        let y = (TITLE_H + legend_h + k as u32 * NOTE_LINE_H + NOTE_LINE_H / 2) as i32;
+        root.draw(&Text::new(line, (x0, y), note_style.clone())).map_err(plot_err)?;
+    }
     Ok(())
 }
 
@@ -283,10 +344,65 @@ fn render_svg(size: (u32, u32), draw: impl FnOnce(&DrawingArea<SVGBackend, Shift
     Ok(svg)
 }
 
+/// Explains a zero line in the header, once, when any panel has one.
+const ZERO_NOTE: &str = " On log axes, runs that reached exactly 0 are drawn on the line labelled 0.";
+/// Height of the strip above a plot for per-planner notes ("never feasible", "2 runs = ∞").
+const NOTE_H: u32 = 18;
+
+/// One planner's curve in a convergence panel, already mapped to the panel's axis.
+struct Curve {
+    color: usize,
+    q1: Vec<f64>,
+    median: Vec<f64>,
+    q3: Vec<f64>,
+    runs: usize,
+}
+
+/// Everything a convergence panel shows, computed before drawing so the header knows whether
+/// any panel needs the zero-line note.
+struct ConvergencePanel<'p> {
+    problem: &'p str,
+    curves: Vec<Curve>,
+    axis: Option<CostAxis>,
+    /// Planners with runs but no finite median at any iteration, which draw nothing.
+    missing: Vec<&'p str>,
+}
+
+impl<'p> ConvergencePanel<'p> {
+    fn of(problem: &ProblemRuns<'p>, order: &[&str]) -> Self {
+        let bands: Vec<Bands> = problem.planners.iter().map(|p| Bands::of(&p.histories)).collect();
+        let axis = CostAxis::for_values(bands.iter().flat_map(|b| b.q1.iter().chain(&b.median).chain(&b.q3)).copied());
+        let missing = problem
+            .planners
+            .iter()
+            .zip(&bands)
+            .filter(|(_, b)| b.runs > 0 && !b.median.iter().any(|v| v.is_finite()))
+            .map(|(p, _)| p.planner)
+            .collect();
+        let curves = problem
+            .planners
+            .iter()
+            .zip(bands)
+            .map(|(p, b)| {
+                let m = |v: Vec<f64>| v.into_iter().map(|x| axis.map_or(x, |a| a.map(x))).collect();
+                Curve {
+                    color: color_index(order, p.planner),
+                    q1: m(b.q1),
+                    median: m(b.median),
+                    q3: m(b.q3),
+                    runs: b.runs,
+                }
+            })
+            .collect();
+        ConvergencePanel { problem: problem.problem, curves, axis, missing }
+    }
+}
+
 /// convergence.svg: one panel per problem with, per planner, the median best cost per iteration
 /// over runs and its interquartile band.
 pub fn render_convergence_figure(title: &str, problems: &[ProblemRuns]) -> Result<String> {
     let order = planner_order(problems);
+    let panels_data: Vec<ConvergencePanel> = problems.iter().map(|p| ConvergencePanel::of(p, &order)).collect();
     let mut legend: Vec<LegendEntry> = order
         .iter()
         .enumerate()
@@ -296,79 +412,81 @@ pub fn render_convergence_figure(title: &str, problems: &[ProblemRuns]) -> Resul
         "interquartile range (25–75 % of runs)",
         Swatch::Fill { color: style::MUTED.mix(0.25), edge: None },
     ));
+    let mut note = "Lines: median over runs of the best cost so far, drawn once half of the runs (bands: three \
+                    quarters) have a finite cost."
+        .to_string();
+    if panels_data.iter().any(|p| p.axis.and_then(|a| a.zero_at()).is_some()) {
+        note.push_str(ZERO_NOTE);
+    }
     let (w, _, _) = figure_size(problems.len(), 0);
-    let header_h = header_height(&legend, w);
+    let header_h = header_height(&legend, &note, w);
     let (w, h, panel) = figure_size(problems.len(), header_h);
     render_svg((w, h), |root| {
-        draw_header(
-            root,
-            title,
-            &legend,
-            "Lines: median over runs of the best cost so far; gaps: fewer than half (band: a quarter) \
-             of the runs have a finite cost yet.",
-        )?;
+        draw_header(root, title, &legend, &note)?;
         let areas = panels(root, problems.len(), header_h, panel);
         if problems.is_empty() {
             return draw_message(&areas[0], "no runs");
         }
-        for (area, problem) in areas.iter().zip(problems) {
-            draw_convergence_panel(area, problem, &order)?;
+        for (area, data) in areas.iter().zip(&panels_data) {
+            draw_convergence_panel(area, data)?;
         }
         Ok(())
     })
 }
 
-fn draw_convergence_panel<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    problem: &ProblemRuns,
-    order: &[&str],
-) -> Result<()> {
-    let body = style::caption(area, problem.problem)?;
-    let bands: Vec<(usize, Bands)> =
-        problem.planners.iter().map(|p| (color_index(order, p.planner), Bands::of(&p.histories))).collect();
-    let axis = CostAxis::for_values(bands.iter().flat_map(|(_, b)| b.q1.iter().chain(&b.median).chain(&b.q3)).copied());
-    let Some(axis) = axis else {
+fn draw_convergence_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, data: &ConvergencePanel) -> Result<()> {
+    let body = style::caption(area, data.problem)?;
+    let Some(axis) = data.axis else {
         let msg =
-            if bands.iter().all(|(_, b)| b.runs == 0) { "no convergence history" } else { "no finite cost recorded" };
+            if data.curves.iter().all(|c| c.runs == 0) { "no convergence history" } else { "no finite cost recorded" };
         return draw_message(&body, msg);
     };
-    let mapped: Vec<(usize, Vec<f64>, Vec<f64>, Vec<f64>, usize)> = bands
-        .iter()
-        .map(|(c, b)| {
-            let m = |v: &Vec<f64>| v.iter().map(|&x| axis.map(x)).collect::<Vec<f64>>();
-            (*c, m(&b.q1), m(&b.median), m(&b.q3), b.runs)
-        })
-        .collect();
+    let (strip, plot_area) = body.split_vertically(if data.missing.is_empty() { 0 } else { NOTE_H });
+    if !data.missing.is_empty() {
+        let (w, _) = strip.dim_in_pixel();
+        let msg = format!("no finite median: {}", data.missing.join(", "));
+        let style = style::font(style::TICK_PX).color(&style::MUTED).pos(Pos::new(HPos::Center, VPos::Center));
+        strip.draw(&Text::new(msg, (w as i32 / 2, NOTE_H as i32 / 2), style)).map_err(plot_err)?;
+    }
     // All bands first, then all medians, so no band veils another planner's line.
-    let mut series: Vec<ConvergenceSeries> = mapped
+    let mut series: Vec<ConvergenceSeries> = data
+        .curves
         .iter()
-        .filter(|(.., runs)| *runs > 1)
-        .map(|(c, q1, _, q3, _)| ConvergenceSeries {
+        .filter(|c| c.runs > 1)
+        .map(|c| ConvergenceSeries {
             label: String::new(),
             median: &[],
-            band: Some((q1.as_slice(), q3.as_slice())),
-            color: Some(*c),
+            band: Some((c.q1.as_slice(), c.q3.as_slice())),
+            color: Some(c.color),
         })
         .collect();
-    series.extend(mapped.iter().map(|(c, _, median, ..)| ConvergenceSeries {
+    series.extend(data.curves.iter().map(|c| ConvergenceSeries {
         label: String::new(),
-        median,
+        median: &c.median,
         band: None,
-        color: Some(*c),
+        color: Some(c.color),
     }));
-    let n = mapped.iter().map(|m| m.2.len()).max().unwrap_or(0);
+    let n = data.curves.iter().map(|c| c.median.len()).max().unwrap_or(0);
     let x = 0.0..(n.saturating_sub(1) as f64).max(1.0);
     let desc = axis.desc("best cost");
-    match axis {
-        CostAxis::Log { lo, hi, .. } => {
-            let chart = build(&body, x, (lo..hi).log_scale(), &desc, |v: &f64| style::fmt_sig(*v))?;
-            draw_curves(chart, &series)
+    let zero = match axis {
+        CostAxis::Log { lo, hi, zero_at } => {
+            let chart = build(&plot_area, x, (lo..hi).log_scale(), &desc, |v: &f64| axis.tick_label(*v))?;
+            let zero = zero_at.map(|z| (chart.backend_coord(&(0.0, z)), chart.backend_coord(&(0.0, z * 10.0))));
+            draw_curves(chart, &series)?;
+            zero
         }
         CostAxis::Linear { lo, hi } => {
-            let chart = build(&body, x, lo..hi, &desc, style::tick_formatter(lo..hi, Y_LABELS))?;
-            draw_curves(chart, &series)
+            let chart = build(&plot_area, x, lo..hi, &desc, style::tick_formatter(lo..hi, Y_LABELS))?;
+            draw_curves(chart, &series)?;
+            None
         }
+    };
+    if let Some(((x0, y0), (_, y1))) = zero {
+        let base = plot_area.get_base_pixel();
+        draw_zero_tick(&plot_area, x0 - base.0, y0 - base.1, y0 - y1)?;
     }
+    Ok(())
 }
 
 /// Tukey's box of one planner's final costs.
@@ -400,6 +518,17 @@ impl BoxStats {
         let outliers = finite.iter().copied().filter(|v| !(fence_lo..=fence_hi).contains(v)).collect();
         Some(BoxStats { q1: s.q1, median: s.median, q3: s.q3, whisker_lo, whisker_hi, outliers, non_finite })
     }
+
+    /// The note above a box for runs it cannot show.
+    fn note(stats: Option<&BoxStats>, runs: usize) -> Option<String> {
+        match stats {
+            None if runs > 0 => Some("no finite cost".into()),
+            Some(b) if b.non_finite > 0 => {
+                Some(format!("{} run{} = ∞", b.non_finite, if b.non_finite == 1 { "" } else { "s" }))
+            }
+            _ => None,
+        }
+    }
 }
 
 /// boxplot.svg: one panel per problem with one box per planner of the final costs of all runs.
@@ -413,17 +542,21 @@ pub fn render_boxplot_figure(title: &str, problems: &[ProblemRuns]) -> Result<St
             LegendEntry::new(*p, Swatch::Fill { color: c.mix(0.3), edge: Some(c) })
         })
         .collect();
+    let mut note = "Final cost of every run. Box: 25–75 %, bar: median, whiskers: furthest run within 1.5 box \
+                    heights, circles: runs beyond."
+        .to_string();
+    let zero = |p: &ProblemRuns| {
+        let axis = CostAxis::for_values(p.planners.iter().flat_map(|q| q.costs.iter().copied()));
+        axis.and_then(|a| a.zero_at()).is_some()
+    };
+    if problems.iter().any(zero) {
+        note.push_str(ZERO_NOTE);
+    }
     let (w, _, _) = figure_size(problems.len(), 0);
-    let header_h = header_height(&legend, w);
+    let header_h = header_height(&legend, &note, w);
     let (w, h, panel) = figure_size(problems.len(), header_h);
     render_svg((w, h), |root| {
-        draw_header(
-            root,
-            title,
-            &legend,
-            "Final cost of every run. Box: 25–75 %, bar: median, whiskers: furthest run within 1.5 box \
-             heights, circles: runs beyond.",
-        )?;
+        draw_header(root, title, &legend, &note)?;
         let areas = panels(root, problems.len(), header_h, panel);
         if problems.is_empty() {
             return draw_message(&areas[0], "no runs");
@@ -435,32 +568,108 @@ pub fn render_boxplot_figure(title: &str, problems: &[ProblemRuns]) -> Result<St
     })
 }
 
+/// A box in pixels of the panel: x of its centre, y of its statistics.
+struct BoxPx {
+    x: i32,
+    q1: i32,
+    median: i32,
+    q3: i32,
+    lo: i32,
+    hi: i32,
+    outliers: Vec<i32>,
+}
+
+/// The pixel layout of a box panel, taken from the chart so the boxes can be sized in pixels
+/// (a capped width, a visible height for identical costs).
+struct BoxPanelPx {
+    boxes: Vec<Option<BoxPx>>,
+    /// Pixel distance between neighbouring boxes.
+    slot: i32,
+    /// Left edge and bottom of the plot.
+    axis_x: i32,
+    axis_y: i32,
+    /// The zero line and the decade above it, on a log axis with zeros.
+    zero: Option<(i32, i32)>,
+}
+
+fn box_pixels<DB, Y>(
+    chart: &ChartContext<DB, Cartesian2d<plotters::coord::types::RangedCoordf64, Y>>,
+    boxes: &[Option<BoxStats>],
+    axis: CostAxis,
+    base: (i32, i32),
+) -> BoxPanelPx
+where
+    DB: DrawingBackend,
+    Y: plotters::coord::ranged1d::Ranged<ValueType = f64>,
+{
+    let px = |x: f64, v: f64| {
+        let (a, b) = chart.backend_coord(&(x, axis.map(v)));
+        (a - base.0, b - base.1)
+    };
+    let y_lo = chart.y_range().start;
+    let (axis_x, axis_y) = {
+        let (a, b) = chart.backend_coord(&(-0.5, y_lo));
+        (a - base.0, b - base.1)
+    };
+    let slot = px(1.0, 1.0).0 - px(0.0, 1.0).0;
+    let boxes = boxes
+        .iter()
+        .enumerate()
+        .map(|(i, b)| {
+            let b = b.as_ref()?;
+            let x = i as f64;
+            Some(BoxPx {
+                x: px(x, b.median).0,
+                q1: px(x, b.q1).1,
+                median: px(x, b.median).1,
+                q3: px(x, b.q3).1,
+                lo: px(x, b.whisker_lo).1,
+                hi: px(x, b.whisker_hi).1,
+                outliers: b.outliers.iter().map(|&o| px(x, o).1).collect(),
+            })
+        })
+        .collect();
+    let zero = axis.zero_at().map(|z| (px(0.0, z).1, px(0.0, z * 10.0).1));
+    BoxPanelPx { boxes, slot, axis_x, axis_y, zero }
+}
+
 fn draw_box_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     problem: &ProblemRuns,
     order: &[&str],
 ) -> Result<()> {
     let body = style::caption(area, problem.problem)?;
-    let boxes: Vec<Option<BoxStats>> = problem.planners.iter().map(|p| BoxStats::of(&p.costs)).collect();
+    let stats: Vec<Option<BoxStats>> = problem.planners.iter().map(|p| BoxStats::of(&p.costs)).collect();
     let axis = CostAxis::for_values(problem.planners.iter().flat_map(|p| p.costs.iter().copied()));
     let Some(axis) = axis else {
         let msg =
             if problem.planners.iter().all(|p| p.costs.is_empty()) { "no runs" } else { "no finite cost recorded" };
         return draw_message(&body, msg);
     };
+    let notes: Vec<Option<String>> =
+        problem.planners.iter().zip(&stats).map(|(p, b)| BoxStats::note(b.as_ref(), p.costs.len())).collect();
+    let has_notes = notes.iter().any(Option::is_some);
+    let (_, plot_area) = body.split_vertically(if has_notes { NOTE_H } else { 0 });
     let n = problem.planners.len().max(1);
     let x = -0.5..n as f64 - 0.5;
     let desc = axis.desc("final cost");
-    match axis {
+    let base = body.get_base_pixel();
+    let layout = match axis {
         CostAxis::Log { lo, hi, .. } => {
-            let chart = build_box_chart(&body, x, (lo..hi).log_scale(), &desc, |v: &f64| style::fmt_sig(*v))?;
-            draw_boxes(&body, chart, problem, &boxes, order, axis)
+            let chart = build_box_chart(&plot_area, x, (lo..hi).log_scale(), &desc, |v: &f64| axis.tick_label(*v))?;
+            box_pixels(&chart, &stats, axis, base)
         }
         CostAxis::Linear { lo, hi } => {
-            let chart = build_box_chart(&body, x, lo..hi, &desc, style::tick_formatter(lo..hi, Y_LABELS))?;
-            draw_boxes(&body, chart, problem, &boxes, order, axis)
+            let chart = build_box_chart(&plot_area, x, lo..hi, &desc, style::tick_formatter(lo..hi, Y_LABELS))?;
+            box_pixels(&chart, &stats, axis, base)
         }
+    };
+    draw_box_glyphs(&body, problem, order, &layout)?;
+    draw_box_labels(&body, problem, &notes, &layout)?;
+    if let Some((y0, y1)) = layout.zero {
+        draw_zero_tick(&body, layout.axis_x, y0, y0 - y1)?;
     }
+    Ok(())
 }
 
 fn build_box_chart<'a, DB, Y>(
@@ -499,6 +708,47 @@ where
     Ok(chart)
 }
 
+/// Widest box in pixels: wider boxes in a single-problem figure only look heavier.
+const MAX_BOX_HALF_W: i32 = 40;
+/// Boxes of identical costs get this half height, so their colour still shows.
+const MIN_BOX_HALF_H: i32 = 4;
+
+fn draw_box_glyphs<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    problem: &ProblemRuns,
+    order: &[&str],
+    layout: &BoxPanelPx,
+) -> Result<()> {
+    let half = ((layout.slot as f64 * 0.3) as i32).clamp(4, MAX_BOX_HALF_W);
+    let cap = (half / 2).max(3);
+    for (p, b) in problem.planners.iter().zip(&layout.boxes) {
+        let Some(b) = b else { continue };
+        let c = style::path_color(color_index(order, p.planner));
+        let whisker = style::line(c, 2);
+        for (from, to) in [(b.q1, b.lo), (b.q3, b.hi)] {
+            if from != to {
+                area.draw(&PathElement::new(vec![(b.x, from), (b.x, to)], whisker)).map_err(plot_err)?;
+                area.draw(&PathElement::new(vec![(b.x - cap, to), (b.x + cap, to)], whisker)).map_err(plot_err)?;
+            }
+        }
+        // Pixel y grows downwards: q3 is above q1.
+        let (mut top, mut bottom) = (b.q3, b.q1);
+        if bottom - top < 2 * MIN_BOX_HALF_H {
+            (top, bottom) = (b.median - MIN_BOX_HALF_H, b.median + MIN_BOX_HALF_H);
+        }
+        let corners = [(b.x - half, top), (b.x + half, bottom)];
+        area.draw(&Rectangle::new(corners, style::fill(WHITE))).map_err(plot_err)?;
+        area.draw(&Rectangle::new(corners, style::fill(c.mix(0.3)))).map_err(plot_err)?;
+        area.draw(&Rectangle::new(corners, style::line(c, 2))).map_err(plot_err)?;
+        area.draw(&PathElement::new(vec![(b.x - half, b.median), (b.x + half, b.median)], style::line(style::TEXT, 3)))
+            .map_err(plot_err)?;
+        for &o in &b.outliers {
+            area.draw(&Circle::new((b.x, o), 3, style::line(c, 2))).map_err(plot_err)?;
+        }
+    }
+    Ok(())
+}
+
 /// Shortens `name` with an ellipsis to fit `width` pixels at the tick font size.
 fn fit_label(name: &str, width: f64) -> String {
     if style::text_width(name, style::TICK_PX) <= width {
@@ -510,72 +760,27 @@ fn fit_label(name: &str, width: f64) -> String {
     s
 }
 
-fn draw_boxes<DB, Y>(
-    body: &DrawingArea<DB, Shift>,
-    chart: ChartContext<DB, Cartesian2d<plotters::coord::types::RangedCoordf64, Y>>,
+/// Planner names under their boxes (on two staggered rows when they would collide) and the
+/// notes above them.
+fn draw_box_labels<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
     problem: &ProblemRuns,
-    boxes: &[Option<BoxStats>],
-    order: &[&str],
-    axis: CostAxis,
-) -> Result<()>
-where
-    DB: DrawingBackend,
-    Y: plotters::coord::ranged1d::Ranged<ValueType = f64>,
-{
-    let plot = chart.plotting_area();
-    let y = |v: f64| axis.map(v);
-    let (half, cap) = (0.3, 0.15);
-    for (i, (p, b)) in problem.planners.iter().zip(boxes).enumerate() {
-        let c = style::path_color(color_index(order, p.planner));
-        let xi = i as f64;
-        let Some(b) = b else { continue };
-        let whisker = style::line(c, 2);
-        for (from, to) in [(b.q1, b.whisker_lo), (b.q3, b.whisker_hi)] {
-            plot.draw(&PathElement::new(vec![(xi, y(from)), (xi, y(to))], whisker)).map_err(plot_err)?;
-            plot.draw(&PathElement::new(vec![(xi - cap, y(to)), (xi + cap, y(to))], whisker)).map_err(plot_err)?;
-        }
-        let corners = [(xi - half, y(b.q1)), (xi + half, y(b.q3))];
-        plot.draw(&Rectangle::new(corners, style::fill(WHITE))).map_err(plot_err)?;
-        plot.draw(&Rectangle::new(corners, style::fill(c.mix(0.3)))).map_err(plot_err)?;
-        plot.draw(&Rectangle::new(corners, style::line(c, 2))).map_err(plot_err)?;
-        plot.draw(&PathElement::new(
-            vec![(xi - half, y(b.median)), (xi + half, y(b.median))],
-            style::line(style::TEXT, 3),
-        ))
-        .map_err(plot_err)?;
-        for &o in &b.outliers {
-            plot.draw(&Circle::new((xi, y(o)), 3, style::line(c, 2))).map_err(plot_err)?;
-        }
-    }
-
-    // Planner names under their boxes, on two staggered rows when they would collide.
-    let base = body.get_base_pixel();
-    let y_axis = chart.y_range().start;
-    let n = problem.planners.len();
-    let slot = if n > 1 {
-        (chart.backend_coord(&(1.0, y_axis)).0 - chart.backend_coord(&(0.0, y_axis)).0) as f64
-    } else {
-        chart.plotting_area().dim_in_pixel().0 as f64
-    };
+    notes: &[Option<String>],
+    layout: &BoxPanelPx,
+) -> Result<()> {
+    let slot = layout.slot as f64;
     let widest = problem.planners.iter().map(|p| style::text_width(p.planner, style::TICK_PX)).fold(0.0, f64::max);
-    let stagger = n > 1 && widest > slot - 6.0;
+    let stagger = problem.planners.len() > 1 && widest > slot - 6.0;
     let room = if stagger { 2.0 * slot - 8.0 } else { slot - 6.0 };
     let text = style::font(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-    let note = style::font(style::TICK_PX).color(&style::MUTED).pos(Pos::new(HPos::Center, VPos::Top));
-    let top = chart.backend_coord(&(0.0, chart.y_range().end)).1;
-    for (i, (p, b)) in problem.planners.iter().zip(boxes).enumerate() {
-        let (px, py) = chart.backend_coord(&(i as f64, y_axis));
+    let muted = style::font(style::TICK_PX).color(&style::MUTED).pos(Pos::new(HPos::Center, VPos::Center));
+    for (i, (p, note)) in problem.planners.iter().zip(notes).enumerate() {
+        let x = layout.axis_x + ((i as f64 + 0.5) * slot).round() as i32;
         let row = if stagger { (i % 2) as i32 } else { 0 };
-        let at = (px - base.0, py - base.1 + 8 + row * 17);
-        body.draw(&Text::new(fit_label(p.planner, room), at, text.clone())).map_err(plot_err)?;
-        let missing = b.as_ref().map_or(p.costs.len(), |b| b.non_finite);
-        if missing > 0 {
-            let label = if b.is_none() {
-                "no finite cost".to_string()
-            } else {
-                format!("{missing} run{} = ∞", if missing == 1 { "" } else { "s" })
-            };
-            body.draw(&Text::new(label, (px - base.0, top - base.1 + 4), note.clone())).map_err(plot_err)?;
+        let at = (x, layout.axis_y + 8 + row * 17);
+        area.draw(&Text::new(fit_label(p.planner, room), at, text.clone())).map_err(plot_err)?;
+        if let Some(note) = note {
+            area.draw(&Text::new(note.clone(), (x, NOTE_H as i32 / 2), muted.clone())).map_err(plot_err)?;
         }
     }
     Ok(())
@@ -680,9 +885,15 @@ mod tests {
     #[test]
     fn zeros_sit_below_the_smallest_positive_cost_on_a_log_axis() {
         let axis = CostAxis::for_values([0.0, 3e-8, 5.0, 200.0]).unwrap();
-        assert_eq!(axis, CostAxis::Log { lo: 1e-9, hi: 1e3, zero_at: Some(1e-9) });
-        assert_eq!(axis.map(0.0), 1e-9);
-        assert!(axis.desc("best cost").contains("0 drawn at 1e-9"));
+        let CostAxis::Log { lo, hi, zero_at: Some(z) } = axis else { panic!("{axis:?}") };
+        assert!((z - 1e-9).abs() < 1e-24 && lo < z && hi == 1e3);
+        assert_eq!(axis.map(0.0), z);
+        assert_eq!(axis.map(5.0), 5.0);
+        assert_eq!(axis.desc("best cost"), "best cost (log scale, 0 below break)");
+        assert_eq!(
+            (axis.tick_label(z), axis.tick_label(1e4), axis.tick_label(1e-8)),
+            (String::new(), "1e4".into(), "1e-8".into())
+        );
         assert!(matches!(CostAxis::for_values([-1.0, 0.0, 500.0]), Some(CostAxis::Linear { .. })));
         assert!(matches!(CostAxis::for_values([4.0, 4.0]), Some(CostAxis::Linear { lo, hi }) if lo < 4.0 && hi > 4.0));
         assert!(CostAxis::for_values([f64::NAN, f64::INFINITY]).is_none());

@@ -9,6 +9,9 @@
 //! "touching or inside". Seeds 001 and 003 use spheres, cylinders (radar threats that reach
 //! through every depth) and cubes; 2-D worlds use circles.
 
+// `!(d >= margin)` is deliberate throughout: a NaN must fail every "clear" test.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::geom::{Vec2, Vec3};
 
 /// A shape at time 0.
@@ -670,92 +673,5 @@ mod tests {
         );
         let c = Obstacle { shape: Shape::Circle { center: Vec2::ZERO, radius: 1.0 }, velocity: v(0.0, 2.0, 5.0) };
         assert_eq!(c.shape_at(1.0), Shape::Circle { center: Vec2::new(0.0, 2.0), radius: 1.0 });
-    }
-}
-
-#[cfg(test)]
-mod tmp_bench {
-    use super::*;
-    use rand::{Rng, SeedableRng};
-
-    fn timeit(f: &mut dyn FnMut() -> usize) -> f64 {
-        let mut best = f64::INFINITY;
-        for _ in 0..15 {
-            let t0 = std::time::Instant::now();
-            let mut acc = 0;
-            for _ in 0..2000 {
-                acc += f();
-            }
-            std::hint::black_box(acc);
-            best = best.min(t0.elapsed().as_secs_f64() / 2000.0);
-        }
-        best * 1e6
-    }
-
-    #[test]
-    fn tmp_bench_hits() {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
-        let mut obs = Vec::new();
-        for k in 0..20 {
-            let c = Vec3::new(rng.random_range(0.0..50.0), rng.random_range(0.0..50.0), rng.random_range(-50.0..0.0));
-            let r = rng.random_range(1.0..3.0);
-            let shape = match k % 4 {
-                0 => Shape::Sphere { center: c, radius: r },
-                1 => Shape::Circle { center: c.truncate(), radius: r },
-                2 => Shape::Cylinder { center: c.truncate(), radius: r, z_min: c.z - 5.0, z_max: c.z + 5.0 },
-                _ => Shape::Box { min: c - Vec3::splat(r), max: c + Vec3::splat(r) },
-            };
-            let velocity = if k % 3 == 0 { Vec3::new(0.01, 0.0, 0.0) } else { Vec3::ZERO };
-            obs.push(Obstacle { shape, velocity });
-        }
-        let pts: Vec<Vec3> = (0..41)
-            .map(|_| Vec3::new(rng.random_range(0.0..50.0), rng.random_range(0.0..50.0), rng.random_range(-50.0..0.0)))
-            .collect();
-        let path: Vec<Vec3> =
-            (0..41).map(|i| Vec3::new(i as f64 * 1.25, 25.0 + (i as f64 * 0.3).sin() * 10.0, -25.0)).collect();
-        let m = std::hint::black_box(0.5);
-        for (name, p) in [("random", &pts), ("path", &path)] {
-            let full = timeit(&mut || {
-                let mut acc = 0;
-                for w in p.windows(2) {
-                    for o in &obs {
-                        acc += o.segment_hits(w[0], w[1], 0.0, 10.0, m) as usize;
-                    }
-                }
-                acc
-            });
-            let stat = timeit(&mut || {
-                let mut acc = 0;
-                for w in p.windows(2) {
-                    for o in &obs {
-                        acc += o.shape.segment_hits(w[0], w[1], m) as usize;
-                    }
-                }
-                acc
-            });
-            let bounds = timeit(&mut || {
-                let mut acc = 0;
-                for w in p.windows(2) {
-                    for o in &obs {
-                        let (lo, hi) = o.shape.bounds();
-                        acc += aabb_apart(w[0], w[1], lo - m, hi + m) as usize;
-                    }
-                }
-                acc
-            });
-            eprintln!("{name}: full {full:.2} static {stat:.2} bounds {bounds:.2} us per 800");
-            for kind in 0..4 {
-                let t = timeit(&mut || {
-                    let mut acc = 0;
-                    for w in p.windows(2) {
-                        for o in obs.iter().skip(kind).step_by(4) {
-                            acc += o.segment_hits(w[0], w[1], 0.0, 10.0, m) as usize;
-                        }
-                    }
-                    acc
-                });
-                eprintln!("  kind {kind}: {t:.2} us per 200");
-            }
-        }
     }
 }

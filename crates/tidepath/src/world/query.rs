@@ -1,8 +1,14 @@
 //! Segment queries against the seabed.
 //!
 //! Terrain clearance is vertical: z - h(x, y). A segment is checked by interval subdivision with
-//! the terrain's rectangle upper bound, so a stretch far above the seabed costs one bound query
-//! and the test is conservative: "clear" is proven, never guessed.
+//! lower bounds of the clearance over each piece, so a stretch far above the seabed costs one
+//! bound query and the test is conservative: "clear" is proven, never guessed. Three bounds
+//! serve, each where it is sharp: the terrain's rectangle upper bound (far from the seabed), a
+//! second-order chord bound for analytic peaks (along stretches that follow the seabed), and an
+//! exact minimum for grids once a piece lies within 2 x 2 cells.
+
+// `!(d >= margin)` is deliberate throughout: a NaN must fail every "clear" test.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::{Terrain, World};
 use crate::geom::Vec3;
@@ -14,12 +20,13 @@ use crate::geom::Vec3;
 const STACK: usize = 64;
 
 /// Hit tests stop bisecting at this fraction of the terrain's feature length (narrowest peak
-/// sigma, finer grid spacing). Near a peak the rectangle bound then overestimates by about
-/// 1e-3 of the peak height, which is how close to the safety envelope a segment may pass and
-/// still be reported as a (conservative) hit.
+/// sigma, finer grid spacing). It only matters for peaks (grid pieces are settled exactly
+/// before): a segment may pass within about 1e-3 of the peak height (the rectangle bound's
+/// error at that size, the chord bound's is far smaller) above the safety envelope and still
+/// be reported as a (conservative) hit.
 const HIT_RESOLUTION: f64 = 1e-3;
-/// The clearance search refines further, so its first-order bound error (about 1e-6 of the
-/// peak height) matches its tolerance.
+/// The clearance search may refine further, so that even the first-order rectangle bound
+/// (error about 1e-6 of the peak height at that size) meets its tolerance.
 const CLEARANCE_RESOLUTION: f64 = 1e-6;
 /// Absolute tolerance of the clearance, as a fraction of the terrain's vertical scale.
 const CLEARANCE_TOL: f64 = 1e-6;
@@ -78,13 +85,12 @@ impl<'a> Probe<'a> {
 
     /// The piece between two samples, with a lower bound of g over it that is at least `need`
     /// if it can be shown cheaply. Grids settle pieces within 2 x 2 cells exactly
-    /// ([`Terrain::exact_min_clearance`]). Otherwise two bounds: where the terrain has a concavity bound M
-    /// (so u'' <= M), the second-order g(s) >= u(s) >= chord(s) - M/2 (s - s0)(s1 - s),
-    /// minimised in closed form,
-    /// sharp along stretches that follow the seabed (its error shrinks with the square of the
-    /// piece length) and free of exp calls; then, only if that falls short of `need`, the
-    /// rectangle bound (lowest end against the highest seabed under the piece), sharp far from
-    /// the seabed.
+    /// ([`Terrain::exact_min_clearance`]). Otherwise two bounds. First, where the terrain has a
+    /// concavity bound M (so u'' <= M), the second-order g(s) >= u(s) >= chord(s) - M/2
+    /// (s - s0)(s1 - s), minimised in closed form: sharp along stretches that follow the seabed
+    /// (its error shrinks with the square of the piece length) and free of exp calls. Then,
+    /// only if that falls short of `need`, the rectangle bound (lowest end against the highest
+    /// seabed under the piece), sharp far from the seabed.
     #[inline]
     fn piece(
         &self,
@@ -155,7 +161,7 @@ impl World {
             return true;
         }
         // One rectangle bound over the whole segment settles the usual case of a segment well
-        // above the seabed; only then are the end points worth evaluating.
+        // above the seabed; only then is the rest worth setting up.
         let lo = a.min(b);
         let hi = a.max(b);
         let root_rect = lo.z - t.max_elevation_in(lo.x, lo.y, hi.x, hi.y);
@@ -163,6 +169,10 @@ impl World {
             return false;
         }
         let probe = Probe::new(t, a, b);
+        // A short segment over a grid is settled exactly at once.
+        if let Some(m) = t.exact_min_clearance(a, b, 0.0, 1.0) {
+            return !(m - probe.slack >= safety);
+        }
         let (sa, sb) = (probe.sample(0.0), probe.sample(1.0));
         if !(sa.1 >= safety && sb.1 >= safety) {
             return true;
@@ -345,154 +355,5 @@ mod tests {
         assert!((c - 10.0).abs() < 1e-6 * 50.0 && c <= 10.0, "{c}");
         assert!(!w.segment_hits_terrain(a, b, 9.99));
         assert!(w.segment_hits_terrain(a, b, 10.01));
-    }
-}
-
-#[cfg(test)]
-mod tmp_bench {
-    use super::*;
-    use crate::geom::Aabb;
-    use crate::world::terrain::{GaussianPeaks, Peak};
-
-    #[test]
-    fn tmp_bench_terrain() {
-        let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, 0.0), Vec3::new(50.0, 50.0, 50.0)));
-        let pk = |x, y, h, s| Peak { x, y, height: h, sigma_x: s, sigma_y: s };
-        w.terrain = Terrain::Peaks(GaussianPeaks {
-            base: 0.0,
-            peaks: vec![
-                pk(10.0, 14.0, 40.0, 3.0),
-                pk(16.0, 11.0, 35.0, 3.5),
-                pk(22.0, 13.0, 30.0, 3.0),
-                pk(13.0, 22.0, 45.0, 4.0),
-                pk(20.0, 5.0, 40.0, 3.5),
-            ],
-            ceiling: None,
-        });
-        {
-            let g = crate::world::grid::RegularGrid2::new(0.0, 0.0, 0.5, 0.5, 101, 101, "g").unwrap();
-            let z: Vec<f64> = (0..101 * 101)
-                .map(|k| {
-                    let (i, j) = ((k % 101) as f64 * 0.5, (k / 101) as f64 * 0.5);
-                    w.terrain.elevation(i, j)
-                })
-                .collect();
-            let mut wg = w.clone();
-            wg.terrain = Terrain::Grid(crate::world::terrain::ElevationGrid::new(g, z, "g").unwrap());
-            for zf in [0.0, 1.0] {
-                let pts: Vec<Vec3> = (0..=40)
-                    .map(|i| {
-                        let s = i as f64 / 40.0;
-                        let x = 3.0 + 27.0 * s;
-                        let y = 15.0 - 5.0 * s;
-                        let h = wg.terrain.elevation(x, y);
-                        let z = if zf == 0.0 { 48.0 - 5.0 * s } else { h + 1.5 };
-                        Vec3::new(x, y, z)
-                    })
-                    .collect();
-                let mut best = f64::INFINITY;
-                let mut hits = 0;
-                for _ in 0..20 {
-                    let t0 = std::time::Instant::now();
-                    for _ in 0..1000 {
-                        hits = 0;
-                        for p in pts.windows(2) {
-                            hits += wg.segment_hits_terrain(std::hint::black_box(p[0]), p[1], 0.5) as usize;
-                        }
-                    }
-                    best = best.min(t0.elapsed().as_secs_f64() / 1000.0);
-                }
-                let t0 = std::time::Instant::now();
-                let mut c = 0.0;
-                for p in pts.windows(2) {
-                    c += wg.segment_terrain_clearance(p[0], p[1]);
-                }
-                let ct = t0.elapsed().as_secs_f64();
-                eprintln!(
-                    "grid {zf}: {:.2} us per 40 segments, hits {hits}; clearance 40 segs {:.1} us ({c})",
-                    best * 1e6,
-                    ct * 1e6
-                );
-            }
-        }
-        // Path S=(3,15,40) to E=(30,10,10), 31 segments, going around at z = 45 then down; and one skimming.
-        for (name, zf) in [("high", 0.0), ("skim", 1.0)] {
-            let pts: Vec<Vec3> = (0..=40)
-                .map(|i| {
-                    let s = i as f64 / 40.0;
-                    let x = 3.0 + 27.0 * s;
-                    let y = 15.0 - 5.0 * s;
-                    let h = w.terrain.elevation(x, y);
-                    let z = if zf == 0.0 { 48.0 - 5.0 * s } else { h + 1.5 };
-                    Vec3::new(x, y, z)
-                })
-                .collect();
-            let mut best = f64::INFINITY;
-            let mut hits = 0;
-            for _ in 0..20 {
-                let t0 = std::time::Instant::now();
-                for _ in 0..1000 {
-                    hits = 0;
-                    for p in pts.windows(2) {
-                        hits += w.segment_hits_terrain(std::hint::black_box(p[0]), p[1], 0.5) as usize;
-                    }
-                }
-                best = best.min(t0.elapsed().as_secs_f64() / 1000.0);
-            }
-            let t0 = std::time::Instant::now();
-            let mut c = 0.0;
-            for p in pts.windows(2) {
-                c += w.segment_terrain_clearance(p[0], p[1]);
-            }
-            let ct = t0.elapsed().as_secs_f64();
-            eprintln!(
-                "{name}: {:.2} us per 40 segments, hits {hits}; clearance 40 segs {:.1} us ({c})",
-                best * 1e6,
-                ct * 1e6
-            );
-        }
-    }
-}
-#[cfg(test)]
-mod dbg_repro {
-    use super::*;
-    use crate::geom::Aabb;
-    use crate::world::terrain::{GaussianPeaks, Peak};
-    #[test]
-    fn dbg_repro() {
-        let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -100.0), Vec3::new(100.0, 100.0, 0.0)));
-        w.terrain = Terrain::Peaks(GaussianPeaks {
-            base: -60.0,
-            peaks: vec![Peak {
-                x: 65.87896481289476,
-                y: 77.81147735331447,
-                height: 39.950570924673244,
-                sigma_x: 19.209774888421126,
-                sigma_y: 26.737060334255748,
-            }],
-            ceiling: None,
-        });
-        let (x, y) = (68.50415451613013f64, 86.79957468554876f64);
-        let h = |x: f64, y: f64| w.terrain.elevation(x, y);
-        let e = 1e-5;
-        let rise = (h(x + e, y) - h(x - e, y)) / (2.0 * e);
-        let wv = Vec3::new(1.0, 0.0, rise).normalize();
-        let p = Vec3::new(x, y, h(x, y));
-        let lam = 0.4611945406037709;
-        let a = p - wv * 0.5 * lam;
-        let b = a + wv * 0.5;
-        let c = w.segment_terrain_clearance(a, b);
-        let mut mn = f64::INFINITY;
-        let mut at = 0.0;
-        for k in 0..=2000 {
-            let s = k as f64 / 2000.0;
-            let q = a + (b - a) * s;
-            let g = q.z - h(q.x, q.y);
-            if g < mn {
-                mn = g;
-                at = s;
-            }
-        }
-        eprintln!("clearance {c}, sampled min {mn} at {at}; rise {rise}");
     }
 }

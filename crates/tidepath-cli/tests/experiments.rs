@@ -1,0 +1,95 @@
+//! End-to-end tests of `compare`, `bench functions` and `reproduce` (issue #3).
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn tidepath(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tidepath")).args(args).output().expect("tidepath runs")
+}
+
+/// results.json without the fields that measure time.
+fn untimed(path: &Path) -> serde_json::Value {
+    fn strip(v: &mut serde_json::Value) {
+        match v {
+            serde_json::Value::Object(m) => {
+                for k in ["elapsed_s", "mean_wall_s", "total_wall_s"] {
+                    m.remove(k);
+                }
+                m.values_mut().for_each(strip);
+            }
+            serde_json::Value::Array(a) => a.iter_mut().for_each(strip),
+            _ => {}
+        }
+    }
+    let mut v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    strip(&mut v);
+    v
+}
+
+#[test]
+fn compare_writes_all_files_and_is_independent_of_jobs() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+    let log = dir.path().join("demo.log");
+    let base = ["compare", "demo", "--planners", "pso,ga,de", "--runs", "4", "--iterations", "30"];
+    let mut args: Vec<&str> = base.to_vec();
+    args.extend(["--jobs", "2", "--out", a.to_str().unwrap(), "--ompl-log", log.to_str().unwrap()]);
+    let o = tidepath(&args);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    for p in ["| pso |", "| ga |", "| de |", "vs pso", "ref"] {
+        assert!(stdout.contains(p), "missing {p} in\n{stdout}");
+    }
+    for f in ["results.json", "runs.csv", "convergence.svg", "boxplot.svg", "paths.svg"] {
+        assert!(a.join(f).is_file(), "{f} missing");
+    }
+    let csv = std::fs::read_to_string(a.join("runs.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 12);
+    let ompl = std::fs::read_to_string(&log).unwrap();
+    assert!(ompl.contains("3 planners") && ompl.contains("tidepath_pso"), "{ompl}");
+
+    let mut args: Vec<&str> = base.to_vec();
+    args.extend(["--jobs", "1", "--out", b.to_str().unwrap()]);
+    assert_eq!(tidepath(&args).status.code(), Some(0));
+    assert_eq!(untimed(&a.join("results.json")), untimed(&b.join("results.json")));
+}
+
+#[test]
+fn compare_rejects_unknown_planner_before_running() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o");
+    let o = tidepath(&["compare", "demo", "--planners", "pso,nope", "--runs", "2", "--out", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("nope"));
+    assert!(!out.exists());
+}
+
+#[test]
+fn bench_functions_reports_sphere_near_zero() {
+    let o = tidepath(&[
+        "bench", "functions", "--algos", "pso,de", "--funcs", "sphere,rastrigin", "--dim", "10", "--runs", "5",
+        "--evaluations", "20000",
+    ]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let sphere: Vec<&str> = stdout.lines().filter(|l| l.starts_with("| sphere-d10-standard")).collect();
+    assert_eq!(sphere.len(), 2, "{stdout}");
+    for line in sphere {
+        let mean: f64 = line.split('|').nth(4).unwrap().trim().parse().unwrap();
+        assert!(mean < 1e-6, "sphere mean {mean} in {line}");
+    }
+}
+
+#[test]
+fn reproduce_baselines_sets_our_table_beside_the_papers() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("rep");
+    let o = tidepath(&["reproduce", "baselines", "--runs", "2", "--out", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let report = std::fs::read_to_string(out.join("REPORT.md")).unwrap();
+    for needle in ["Table 2: small ranges", "Table 4: wide ranges", "mean paper", "mean ours", "1.750e-36", "### Claims"] {
+        assert!(report.contains(needle), "REPORT.md lacks {needle}");
+    }
+    assert!(out.join("table2-small/convergence.svg").is_file());
+    assert!(out.join("table4-wide/results.json").is_file());
+}

@@ -1,0 +1,54 @@
+//! Overhead of the experiment runner (issue #3 target: under 1% of a 10 ms run).
+//!
+//! Compares ten ~10 ms optimizer runs called directly with the same ten runs executed through
+//! `experiments::runner` (task list, seed derivation, thread pool, result collection) on one
+//! worker thread, so the difference is the runner's own cost.
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use tidepath::experiments::runner::{execute, tasks, Task};
+use tidepath::experiments::RunRecord;
+use tidepath::optim::functions::{Function, FunctionObjective};
+use tidepath::optim::pso::{Pso, PsoParams};
+use tidepath::optim::{run, Budget};
+use tidepath::rng::run_rng;
+
+const RUNS: u64 = 10;
+
+fn one_run(seed: u64) -> f64 {
+    let objective = FunctionObjective::new(Function::Rastrigin, 30, -5.12, 5.12);
+    let mut pso = Pso::new(PsoParams::default());
+    run(&mut pso, &objective, &Budget::evaluations(12_000), run_rng(seed, 0), false, &mut |_| {}).best_cost
+}
+
+fn record(t: &Task, cost: f64) -> RunRecord {
+    RunRecord {
+        problem: t.problem.clone(),
+        planner: t.planner.clone(),
+        run: t.run,
+        seed: t.seed,
+        cost,
+        feasible: true,
+        length_m: None,
+        travel_time_s: None,
+        evaluations: 12_000,
+        iterations: 0,
+        elapsed_s: 0.0,
+        stop_reason: tidepath::optim::StopReason::MaxEvaluations,
+        history: Vec::new(),
+        waypoints: Vec::new(),
+    }
+}
+
+fn bench(c: &mut Criterion) {
+    let all = tasks(1, &["rastrigin".to_string()], &["pso".to_string()], RUNS);
+    let mut g = c.benchmark_group("runner overhead (10 runs of ~10 ms)");
+    g.sample_size(10);
+    g.bench_function("direct calls", |b| b.iter(|| all.iter().map(|t| one_run(t.seed)).sum::<f64>()));
+    g.bench_function("through experiments::runner, 1 job", |b| {
+        b.iter(|| execute(&all, 1, |t| Ok(record(t, one_run(t.seed))), &|_| {}).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
