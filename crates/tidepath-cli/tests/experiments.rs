@@ -67,8 +67,18 @@ fn compare_rejects_unknown_planner_before_running() {
 #[test]
 fn bench_functions_reports_sphere_near_zero() {
     let o = tidepath(&[
-        "bench", "functions", "--algos", "pso,de", "--funcs", "sphere,rastrigin", "--dim", "10", "--runs", "5",
-        "--evaluations", "20000",
+        "bench",
+        "functions",
+        "--algos",
+        "pso,de",
+        "--funcs",
+        "sphere,rastrigin",
+        "--dim",
+        "10",
+        "--runs",
+        "5",
+        "--evaluations",
+        "20000",
     ]);
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
@@ -87,7 +97,9 @@ fn reproduce_baselines_sets_our_table_beside_the_papers() {
     let o = tidepath(&["reproduce", "baselines", "--runs", "2", "--out", out.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     let report = std::fs::read_to_string(out.join("REPORT.md")).unwrap();
-    for needle in ["Table 2: small ranges", "Table 4: wide ranges", "mean paper", "mean ours", "1.750e-36", "### Claims"] {
+    for needle in
+        ["Table 2: small ranges", "Table 4: wide ranges", "mean paper", "mean ours", "1.750e-36", "### Claims"]
+    {
         assert!(report.contains(needle), "REPORT.md lacks {needle}");
     }
     assert!(out.join("table2-small/convergence.svg").is_file());

@@ -136,10 +136,12 @@ fn assert_well_formed(svg: &str, title: &str, labels: &[&str]) {
 #[test]
 fn one_problem_with_ten_decades_and_zeros() {
     let problems = vec![problem("sphere-d30-small", 7, 1.0, true)];
-    let svg = render_convergence_figure("Convergence on sphere", &problems).unwrap();
+    let title =
+        "Convergence — sphere-d30-small, a long list of problems: 30 runs per planner (median and interquartile band)";
+    let svg = render_convergence_figure(title, &problems).unwrap();
     assert_well_formed(
         &svg,
-        "Convergence on sphere",
+        title,
         &[
             "sphere-d30-small",
             "iteration",
@@ -206,11 +208,7 @@ fn awkward_runs_still_render() {
         ProblemRuns { problem: "nothing ran", planners: vec![] },
     ];
     let svg = render_convergence_figure("edge cases", &problems).unwrap();
-    assert_well_formed(
-        &svg,
-        "edge cases",
-        &["ragged", "all equal", "lonely", "never feasible", "no convergence history"],
-    );
+    assert_well_formed(&svg, "edge cases", &["ragged", "all equal", "lonely", "never feasible", "no runs"]);
     save("convergence_edge.svg", &svg);
     let svg = render_boxplot_figure("edge cases", &problems).unwrap();
     assert_well_formed(&svg, "edge cases", &["ragged runs", "flat", "no finite cost", "1 run = ∞", "no runs"]);
@@ -218,6 +216,30 @@ fn awkward_runs_still_render() {
 
     let svg = render_convergence_figure("empty", &[]).unwrap();
     assert_well_formed(&svg, "empty", &["no runs"]);
+}
+
+#[test]
+fn many_planners_with_long_names_keep_their_colours() {
+    let names = ["pso", "de", "random search", "ga", "abc with restarts", "straight line baseline", "cmaes", "gwo"];
+    let problems: Vec<ProblemRuns> = (0..4)
+        .map(|k| ProblemRuns {
+            problem: ["a", "b", "c", "d"][k],
+            planners: names
+                .iter()
+                .enumerate()
+                .map(|(i, n)| PlannerRuns {
+                    planner: n,
+                    ..runs(PLANNERS[i % 3], 100 + i as u64, 1.0 + k as f64, false)
+                })
+                .collect(),
+        })
+        .collect();
+    let svg = render_boxplot_figure("eight planners", &problems).unwrap();
+    assert_well_formed(&svg, "eight planners", &names);
+    save("boxplot_many.svg", &svg);
+    let svg = render_convergence_figure("eight planners", &problems).unwrap();
+    assert_well_formed(&svg, "eight planners", &names);
+    save("convergence_many.svg", &svg);
 }
 
 fn small_world() -> World {

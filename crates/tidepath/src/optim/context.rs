@@ -113,8 +113,8 @@ impl<'a> Context<'a> {
             *o = f64::INFINITY;
         }
         self.evaluations += n as u64;
-        for i in 0..n {
-            self.offer(pop.row(i), out[i]);
+        for (i, &f) in out[..n].iter().enumerate() {
+            self.offer(pop.row(i), f);
         }
     }
 

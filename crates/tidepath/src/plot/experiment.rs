@@ -12,8 +12,8 @@
 //! Cost axes switch to log10 when the costs span more than two decades, as in the plan figure.
 //! Function benchmarks often reach a cost of exactly 0, which a log axis cannot show; rather
 //! than fall back to a linear axis that flattens every other value into the floor, zeros are
-//! drawn on the bottom edge of the axis (one decade below the smallest positive cost) and the
-//! axis label says so.
+//! drawn on their own line labelled "0", a decade below the smallest positive cost and below a
+//! break in the axis, and the axis label and the figure note say so.
 
 use std::ops::Range;
 use std::path::Path;
@@ -95,7 +95,8 @@ const GRID_PANEL: (u32, u32) = (440, 330);
 const BOX_LABEL_H: u32 = 44;
 
 /// Columns and rows of the panel grid: as square as possible, at most four columns so that
-/// panels keep readable tick labels (twelve problems give 4 x 3).
+/// panels keep readable tick labels. Twelve problems (six functions, small and wide) give 4 x 3,
+/// which keeps each function's two variants side by side.
 fn grid_shape(n: usize) -> (usize, usize) {
     let cols = match n {
         0 | 1 => 1,
@@ -243,10 +244,12 @@ impl Bands {
         for i in 0..len {
             column.clear();
             column.extend(filled.iter().map(|h| h.get(i).or(h.last()).copied().unwrap_or(f64::INFINITY)));
-            let s = Summary::of(&column).expect("filled histories hold no NaN");
-            out.q1.push(s.q1);
-            out.median.push(s.median);
-            out.q3.push(s.q3);
+            // Filled histories hold no NaN, so a summary always exists.
+            let (q1, median, q3) =
+                Summary::of(&column).map_or((f64::INFINITY, f64::INFINITY, f64::INFINITY), |s| (s.q1, s.median, s.q3));
+            out.q1.push(q1);
+            out.median.push(median);
+            out.q3.push(q3);
         }
         out
     }
@@ -260,11 +263,34 @@ fn figure_size(n: usize, header_h: u32) -> (u32, u32, (u32, u32)) {
 }
 
 const NOTE_LINE_H: u32 = 18;
+const TITLE_LINE_H: u32 = 26;
+/// Bold text runs wider than the regular-weight estimate of [`style::text_width`].
+const BOLD_WIDTH: f64 = 1.12;
+
+/// The title wrapped to the figure width: a long title (many problems joined) would otherwise
+/// run off a one-panel figure.
+fn title_lines(title: &str, width: u32) -> Vec<String> {
+    wrap(title, width.saturating_sub(2 * MARGIN) as f64 / BOLD_WIDTH, style::TITLE_PX)
+}
+
+fn title_height(title: &str, width: u32) -> u32 {
+    TITLE_H + title_lines(title, width).len().saturating_sub(1) as u32 * TITLE_LINE_H
+}
+
+fn draw_title<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, title: &str) -> Result<()> {
+    let (w, _) = root.dim_in_pixel();
+    let style = style::bold(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Center));
+    for (k, line) in title_lines(title, w).into_iter().enumerate() {
+        let y = (TITLE_H / 2 + 2 + k as u32 * TITLE_LINE_H) as i32;
+        root.draw(&Text::new(line, (w as i32 / 2, y), style.clone())).map_err(plot_err)?;
+    }
+    Ok(())
+}
 
 /// Height of the title, shared legend and explanatory note at figure width `width`.
-fn header_height(legend: &[LegendEntry], note: &str, width: u32) -> u32 {
+fn header_height(title: &str, legend: &[LegendEntry], note: &str, width: u32) -> u32 {
     let lines = wrap(note, legend_width(width) as f64, style::LEGEND_PX).len() as u32;
-    TITLE_H + style::legend_height(legend, legend_width(width)) + lines * NOTE_LINE_H + 6
+    title_height(title, width) + style::legend_height(legend, legend_width(width)) + lines * NOTE_LINE_H + 6
 }
 
 fn legend_width(width: u32) -> u32 {
@@ -293,15 +319,15 @@ fn draw_header<DB: DrawingBackend>(
     note: &str,
 ) -> Result<()> {
     let (w, _) = root.dim_in_pixel();
-    let title_style = style::bold(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Center));
-    root.draw(&Text::new(title.to_string(), (w as i32 / 2, TITLE_H as i32 / 2 + 2), title_style)).map_err(plot_err)?;
+    draw_title(root, title)?;
+    let top = title_height(title, w);
     let legend_h = style::legend_height(legend, legend_width(w));
     let x0 = (MARGIN + LEGEND_INDENT) as i32;
-    let legend_area = root.clone().shrink((x0, TITLE_H as i32), (legend_width(w), legend_h.max(1)));
+    let legend_area = root.clone().shrink((x0, top as i32), (legend_width(w), legend_h.max(1)));
     style::draw_legend(&legend_area, legend)?;
     let note_style = style::font(style::LEGEND_PX).color(&style::MUTED).pos(Pos::new(HPos::Left, VPos::Center));
     for (k, line) in wrap(note, legend_width(w) as f64, style::LEGEND_PX).into_iter().enumerate() {
-        let y = (TITLE_H + legend_h + k as u32 * NOTE_LINE_H + NOTE_LINE_H / 2) as i32;
+        let y = (top + legend_h + k as u32 * NOTE_LINE_H + NOTE_LINE_H / 2) as i32;
         root.draw(&Text::new(line, (x0, y), note_style.clone())).map_err(plot_err)?;
     }
     Ok(())
@@ -419,7 +445,7 @@ pub fn render_convergence_figure(title: &str, problems: &[ProblemRuns]) -> Resul
         note.push_str(ZERO_NOTE);
     }
     let (w, _, _) = figure_size(problems.len(), 0);
-    let header_h = header_height(&legend, &note, w);
+    let header_h = header_height(title, &legend, &note, w);
     let (w, h, panel) = figure_size(problems.len(), header_h);
     render_svg((w, h), |root| {
         draw_header(root, title, &legend, &note)?;
@@ -437,8 +463,13 @@ pub fn render_convergence_figure(title: &str, problems: &[ProblemRuns]) -> Resul
 fn draw_convergence_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, data: &ConvergencePanel) -> Result<()> {
     let body = style::caption(area, data.problem)?;
     let Some(axis) = data.axis else {
-        let msg =
-            if data.curves.iter().all(|c| c.runs == 0) { "no convergence history" } else { "no finite cost recorded" };
+        let msg = if data.curves.is_empty() {
+            "no runs"
+        } else if data.curves.iter().all(|c| c.runs == 0) {
+            "no convergence history"
+        } else {
+            "no finite cost recorded"
+        };
         return draw_message(&body, msg);
     };
     let (strip, plot_area) = body.split_vertically(if data.missing.is_empty() { 0 } else { NOTE_H });
@@ -553,7 +584,7 @@ pub fn render_boxplot_figure(title: &str, problems: &[ProblemRuns]) -> Result<St
         note.push_str(ZERO_NOTE);
     }
     let (w, _, _) = figure_size(problems.len(), 0);
-    let header_h = header_height(&legend, &note, w);
+    let header_h = header_height(title, &legend, &note, w);
     let (w, h, panel) = figure_size(problems.len(), header_h);
     render_svg((w, h), |root| {
         draw_header(root, title, &legend, &note)?;
@@ -799,15 +830,14 @@ pub fn render_paths_figure(
     const SIZE: (u32, u32) = (1400, 760);
     render_svg(SIZE, |root| {
         let (w, h) = SIZE;
-        let title_style = style::bold(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Center));
-        root.draw(&Text::new(title.to_string(), (w as i32 / 2, TITLE_H as i32 / 2 + 2), title_style))
-            .map_err(plot_err)?;
-        let body = root.split_vertically(TITLE_H).1.margin(0, 8, 8, 8);
+        draw_title(root, title)?;
+        let title_h = title_height(title, w);
+        let body = root.split_vertically(title_h).1.margin(0, 8, 8, 8);
         // A wide domain gets a wider plan view, as in the plan figure; the profile keeps
         // enough width to read the climbs.
         let b = world.bounds;
         let aspect = ((b.max.x - b.min.x) / (b.max.y - b.min.y)).clamp(0.3, 3.0);
-        let avail_h = (h - TITLE_H) as f64 - 200.0;
+        let avail_h = h.saturating_sub(title_h) as f64 - 200.0;
         let left_w = (aspect * avail_h + 200.0).clamp(560.0, 880.0) as u32;
         let (left, right) = body.split_horizontally(left_w);
         draw_plan_view(&left, world, time, paths, start, goal)?;

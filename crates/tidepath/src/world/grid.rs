@@ -18,7 +18,7 @@ pub struct RegularGrid2 {
 impl RegularGrid2 {
     /// Checks the geometry; `field` names the scenario field for error messages.
     pub fn new(x0: f64, y0: f64, dx: f64, dy: f64, nx: usize, ny: usize, field: &str) -> Result<Self> {
-        if !(dx > 0.0 && dx.is_finite()) || !(dy > 0.0 && dy.is_finite()) {
+        if !(dx > 0.0 && dx.is_finite() && dy > 0.0 && dy.is_finite()) {
             return Err(Error::input(
                 format!("{field}.spacing"),
                 format!("must be positive and finite, got [{dx}, {dy}]"),

@@ -157,7 +157,7 @@ impl Shape {
     pub fn segment_distance(&self, a: Vec3, b: Vec3) -> f64 {
         match *self {
             Shape::Sphere { center, radius } => (segment_point_dist2(a, b - a, center).sqrt() - radius).max(0.0),
-            Shape::Circle { center, radius } => circle_segment_distance(center, radius, a, b, 0.0, 1.0),
+            Shape::Circle { center, radius } => circle_segment_distance(center, radius, a, b),
             Shape::Cylinder { center, radius, z_min, z_max } => {
                 cylinder_segment_distance(center, radius, z_min, z_max, a, b, f64::NEG_INFINITY, f64::INFINITY)
             }
@@ -282,8 +282,8 @@ fn segment_point_dist2_2d(a: Vec2, d: Vec2, p: Vec2, s0: f64, s1: f64) -> (f64, 
     ((w - d * s).length_squared(), s)
 }
 
-fn circle_segment_distance(center: Vec2, radius: f64, a: Vec3, b: Vec3, s0: f64, s1: f64) -> f64 {
-    let (d2, _) = segment_point_dist2_2d(a.truncate(), (b - a).truncate(), center, s0, s1);
+fn circle_segment_distance(center: Vec2, radius: f64, a: Vec3, b: Vec3) -> f64 {
+    let (d2, _) = segment_point_dist2_2d(a.truncate(), (b - a).truncate(), center, 0.0, 1.0);
     (d2.sqrt() - radius).max(0.0)
 }
 

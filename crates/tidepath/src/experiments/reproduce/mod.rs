@@ -35,11 +35,17 @@ pub struct ExperimentOutcome {
     pub claims: Vec<(Claim, ClaimVerdict)>,
 }
 
+/// Progress callback: (runs finished, runs in total).
+pub type ProgressFn<'a> = dyn Fn(usize, usize) + Sync + 'a;
+
+/// Runs every experiment of a paper.
+pub type RunPaper = fn(&ReproduceOptions, &ProgressFn<'_>) -> Result<Vec<ExperimentOutcome>>;
+
 /// A registered paper.
 pub struct Paper {
     pub id: &'static str,
     pub title: &'static str,
-    pub run: fn(&ReproduceOptions, &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<ExperimentOutcome>>,
+    pub run: RunPaper,
 }
 
 pub const PAPERS: &[Paper] = &[Paper {
