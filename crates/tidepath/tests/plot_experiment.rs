@@ -139,10 +139,12 @@ fn one_problem_with_ten_decades_and_zeros() {
     let title =
         "Convergence — sphere-d30-small, a long list of problems: 30 runs per planner (median and interquartile band)";
     let svg = render_convergence_figure(title, &problems).unwrap();
+    // Too long for one line of a one-panel figure: wrapped, not cut off.
     assert_well_formed(
         &svg,
-        title,
+        "Convergence — sphere-d30-small,",
         &[
+            "(median and interquartile band)",
             "sphere-d30-small",
             "iteration",
             "best cost (log scale, 0 below break)",

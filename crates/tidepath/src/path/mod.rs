@@ -50,3 +50,6 @@ impl<'a> PathModel<'a> {
         points.windows(2).map(|w| w[0].distance(w[1])).sum()
     }
 }
+
+#[cfg(test)]
+mod tests;
