@@ -160,7 +160,7 @@ fn nan_and_inf_are_rejected_anywhere() {
 
 #[test]
 fn every_subcommand_has_help() {
-    for sub in ["scenarios", "scenario", "planners", "plan", "eval"] {
+    for sub in ["scenarios", "scenario", "planners", "plan", "eval", "compare", "bench", "reproduce"] {
         let o = tidepath(&[sub, "--help"], &[]);
         assert_eq!(o.status.code(), Some(0), "{sub} --help");
         assert!(String::from_utf8_lossy(&o.stdout).contains("Usage"), "{sub}");
@@ -181,4 +181,21 @@ fn listings_show_the_demo_and_the_planners() {
     std::fs::write(&f, demo_text()).unwrap();
     let o = tidepath(&["plan", f.to_str().unwrap(), "--iterations", "2"], &[]);
     assert!(matches!(o.status.code(), Some(0) | Some(1)), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+#[test]
+fn smoothed_plans_are_evaluated_as_smoothed() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("s.json");
+    let o = tidepath(&["plan", "demo", "--smooth", "shortcut", "--seed", "2", "--out", out.to_str().unwrap()], &[]);
+    assert!(matches!(o.status.code(), Some(0) | Some(1)), "{}", String::from_utf8_lossy(&o.stderr));
+    let plan = json(&out);
+    let smoothed = plan["smoothed"].as_array().expect("smoothed path");
+    assert!(smoothed.len() <= plan["waypoints"].as_array().unwrap().len());
+    assert!(plan["cost"].as_f64().unwrap() <= plan["raw_cost"].as_f64().unwrap());
+    let o = tidepath(&["eval", "demo", out.to_str().unwrap()], &[]);
+    assert!(String::from_utf8_lossy(&o.stdout).contains("relative difference 0.00e0"));
+    let o = tidepath(&["plan", "demo", "--smooth", "spline-magic"], &[]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("spline-magic"));
 }

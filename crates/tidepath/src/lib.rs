@@ -26,6 +26,7 @@ pub mod planner;
 pub mod plot;
 pub mod rng;
 pub mod scenario;
+pub mod smoothing;
 pub mod vehicle;
 pub mod world;
 

@@ -31,6 +31,9 @@ pub struct PlanArgs {
     /// Wall-time safety net in seconds; a run stopped by it depends on the machine.
     #[arg(long)]
     pub time_limit: Option<f64>,
+    /// Smooth the plan (`shortcut`, or `none` to override the scenario's smoother).
+    #[arg(long)]
+    pub smooth: Option<String>,
     /// Threads for evaluating populations (default: all cores). Results do not depend on it.
     #[arg(long)]
     pub jobs: Option<usize>,
@@ -67,6 +70,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         population: args.population,
         time_limit_s: args.time_limit,
         parallel: true,
+        smoother: args.smooth.clone(),
     };
     let label = req.planner.clone().unwrap_or_else(|| scenario.planner.id.clone());
     let mut bar = DelayedBar::new(&label);
@@ -85,7 +89,8 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
 }
 
 fn write_figure(scenario: &Scenario, report: &PlanReport, out: &std::path::Path) -> Result<(), Error> {
-    let points = report.points();
+    let raw: Vec<_> = report.waypoints.iter().map(|p| tidepath::Vec3::from_array(*p)).collect();
+    let smoothed = report.smoothed.is_some().then(|| report.points());
     let history: Vec<f64> = report.history.iter().map(|h| h.unwrap_or(f64::NAN)).collect();
     let verdict = if report.feasible { "feasible" } else { "INFEASIBLE" };
     let fig = PlanFigure {
@@ -97,7 +102,13 @@ fn write_figure(scenario: &Scenario, report: &PlanReport, out: &std::path::Path)
         start: scenario.start,
         goal: scenario.goal,
         time: scenario.departure_time,
-        paths: vec![PlotPath { label: report.planner.clone(), points: &points }],
+        paths: match &smoothed {
+            None => vec![PlotPath { label: report.planner.clone(), points: &raw }],
+            Some(s) => vec![
+                PlotPath { label: format!("{} (smoothed)", report.planner), points: s },
+                PlotPath { label: format!("{} (raw)", report.planner), points: &raw },
+            ],
+        },
         histories: vec![(report.planner.clone(), &history)],
     };
     write_plan_figure(&fig, out)
@@ -109,6 +120,9 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
     let terms: Vec<String> =
         r.cost_terms.iter().map(|(k, v)| format!("{k} {:.4}", v.as_f64().unwrap_or(f64::NAN))).collect();
     println!("  cost           {:.6}  ({})", r.cost, terms.join(", "));
+    if let (Some(raw), Some(s)) = (r.raw_cost, &r.smoothed) {
+        println!("  smoothed       {} -> {} waypoints; cost before smoothing {raw:.6}", r.waypoints.len(), s.len());
+    }
     let m = &r.metrics;
     println!("  length         {:.1} m", m.length_m);
     println!("  travel time    {:.1} s ({}, {} model)", m.travel_time_s, hms(m.travel_time_s), r.travel_time_model);

@@ -99,6 +99,7 @@ fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
         population: budget.population,
         time_limit_s: budget.time_limit_s,
         parallel: false,
+        smoother: None,
     }
 }
 
@@ -118,7 +119,7 @@ fn scenario_run(scenario: &Scenario, budget: &RunBudget, t: &Task) -> Result<Run
         elapsed_s: r.elapsed_s,
         stop_reason: r.stop_reason,
         history: r.history,
-        waypoints: r.waypoints,
+        waypoints: r.smoothed.clone().unwrap_or(r.waypoints),
     })
 }
 

@@ -20,9 +20,14 @@ pub struct PlanReport {
     pub travel_time_model: String,
     /// The path, start and goal included, [x, y, z] in metres.
     pub waypoints: Vec<[f64; 3]>,
-    /// A smoothed rendition of the path, when a smoother ran.
+    /// The path after the smoother, when one ran. `cost`, `cost_terms`, `feasible`,
+    /// `violations` and `metrics` then describe this path.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub smoothed: Option<Vec<[f64; 3]>>,
+    /// Cost of `waypoints` before smoothing, when a smoother ran.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub raw_cost: Option<f64>,
+    /// Cost of the final path (`smoothed` if present, else `waypoints`).
     pub cost: f64,
     /// The weighted terms of the cost model, in the model's order; they sum to `cost`.
     pub cost_terms: serde_json::Map<String, serde_json::Value>,
@@ -42,8 +47,9 @@ impl PlanReport {
         serde_json::to_string_pretty(self).expect("plan report serialises") + "\n"
     }
 
+    /// The final path: `smoothed` when present, else `waypoints`.
     pub fn points(&self) -> Vec<Vec3> {
-        self.waypoints.iter().map(|p| Vec3::from_array(*p)).collect()
+        self.smoothed.as_ref().unwrap_or(&self.waypoints).iter().map(|p| Vec3::from_array(*p)).collect()
     }
 }
 
@@ -78,25 +84,29 @@ impl PlanFile {
                 format!("{} (line {}, column {})", strip_position(&inner.to_string()), inner.line(), inner.column()),
             )
         })?;
-        if file.waypoints.len() < 2 {
-            return Err(Error::input(
-                format!("{source}: waypoints"),
-                format!("a path needs at least 2 points, got {}", file.waypoints.len()),
-            ));
-        }
-        for (i, p) in file.waypoints.iter().enumerate() {
-            if p.iter().any(|v| !v.is_finite()) {
+        let lists = [("waypoints", Some(&file.waypoints)), ("smoothed", file.smoothed.as_ref())];
+        for (name, list) in lists.into_iter().filter_map(|(n, l)| l.map(|l| (n, l))) {
+            if list.len() < 2 {
                 return Err(Error::input(
-                    format!("{source}: waypoints[{i}]"),
-                    format!("{p:?}: numbers must be finite"),
+                    format!("{source}: {name}"),
+                    format!("a path needs at least 2 points, got {}", list.len()),
                 ));
+            }
+            for (i, p) in list.iter().enumerate() {
+                if p.iter().any(|v| !v.is_finite()) {
+                    return Err(Error::input(
+                        format!("{source}: {name}[{i}]"),
+                        format!("{p:?}: numbers must be finite"),
+                    ));
+                }
             }
         }
         Ok(file)
     }
 
+    /// The final path: `smoothed` when present, else `waypoints`.
     pub fn points(&self) -> Vec<Vec3> {
-        self.waypoints.iter().map(|p| Vec3::from_array(*p)).collect()
+        self.smoothed.as_ref().unwrap_or(&self.waypoints).iter().map(|p| Vec3::from_array(*p)).collect()
     }
 }
 

@@ -2,7 +2,8 @@
 //! optional band (the interquartile range over repeated runs).
 //!
 //! The y axis switches to log10 when the costs span more than two decades, since early costs
-//! (often penalty-dominated) would otherwise flatten everything that happens later. Non-finite
+//! (often penalty-dominated) would otherwise flatten everything that happens later; it is then
+//! labelled at whole decades from end to end (see [`super::log_axis`]). Non-finite
 //! values (no feasible solution yet, failed runs) break the line instead of being invented.
 
 use std::ops::Range;
@@ -13,6 +14,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::log_axis::{self, DecadeAxis, Decades};
 use super::style::{self, plot_err, LegendEntry, Swatch};
 use crate::error::Result;
 
@@ -110,10 +112,9 @@ pub fn draw_convergence<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, serie
     let (legend_area, chart_area) = body.split_vertically(legend_h);
     style::draw_legend(&legend_area.margin(0, 0, 70, 0), &legend)?;
 
-    if wants_log_scale(finite.iter().copied()) {
-        let (a, b) = (10f64.powf(lo.log10().floor()), 10f64.powf(hi.log10().ceil()));
-        let chart =
-            build(&chart_area, x_range, (a..b).log_scale(), "best cost (log scale)", |v: &f64| style::fmt_sig(*v))?;
+    if let Some(decades) = Decades::for_values(lo, hi).filter(|_| wants_log_scale(finite.iter().copied())) {
+        let y = DecadeAxis::new(decades);
+        let chart = build(&chart_area, x_range, y, "best cost (log scale)", |v: &f64| log_axis::label(*v))?;
         draw_curves(chart, series)
     } else {
         let pad = if hi > lo { (hi - lo) * 0.05 } else { lo.abs().max(1.0) * 0.1 };

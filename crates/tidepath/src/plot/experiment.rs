@@ -23,6 +23,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::convergence::{build, draw_curves, wants_log_scale, ConvergenceSeries, Y_LABELS};
+use super::log_axis::{self, DecadeAxis, Decades};
 use super::style::{self, plot_err, LegendEntry, Swatch};
 use super::{draw_plan_view, draw_profile, PlotPath};
 use crate::error::Result;
@@ -122,12 +123,13 @@ fn color_index(order: &[&str], planner: &str) -> usize {
     order.iter().position(|p| *p == planner).unwrap_or(0)
 }
 
-/// How a cost axis maps values: linear, or log10 with zeros drawn on their own line at
-/// `zero_at`, a decade below every positive cost and separated from them by an axis break.
+/// How a cost axis maps values: linear, or log10 labelled at `decades`, with zeros drawn on
+/// their own line at `zero_at`, a decade below the lowest labelled one and separated from it
+/// by an axis break.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum CostAxis {
     Linear { lo: f64, hi: f64 },
-    Log { lo: f64, hi: f64, zero_at: Option<f64> },
+    Log { lo: f64, hi: f64, zero_at: Option<f64>, decades: Decades },
 }
 
 impl CostAxis {
@@ -139,15 +141,15 @@ impl CostAxis {
         let has_zero = finite.contains(&0.0);
         if lo >= 0.0 && wants_log_scale(finite.iter().copied().filter(|v| *v > 0.0)) {
             let min_pos = finite.iter().copied().filter(|v| *v > 0.0).fold(f64::INFINITY, f64::min);
-            let floor = min_pos.log10().floor();
-            let b = 10f64.powf(hi.log10().ceil());
+            let decades = Decades::for_values(min_pos, hi)?;
+            let (lo, hi) = (decades.lo(), decades.hi());
             if has_zero {
                 // The zero line sits a third of a decade above the bottom so it is not hidden
                 // by the x axis.
-                let z = 10f64.powf(floor - 1.0);
-                return Some(CostAxis::Log { lo: 10f64.powf(floor - 1.35), hi: b, zero_at: Some(z) });
+                let z = lo / 10.0;
+                return Some(CostAxis::Log { lo: lo / 10f64.powf(1.35), hi, zero_at: Some(z), decades });
             }
-            return Some(CostAxis::Log { lo: 10f64.powf(floor), hi: b, zero_at: None });
+            return Some(CostAxis::Log { lo, hi, zero_at: None, decades });
         }
         let pad = if hi > lo { (hi - lo) * 0.05 } else { lo.abs().max(1.0) * 0.1 };
         Some(CostAxis::Linear { lo: lo - pad, hi: hi + pad })
@@ -177,17 +179,13 @@ impl CostAxis {
     }
 
     /// Tick labels: powers of ten from 1e4 up as "1e4" rather than "10000", so labels of a
-    /// many-decade axis have similar widths; the zero line's tick is labelled by
-    /// [`draw_zero_tick`] instead.
+    /// many-decade axis have similar widths ([`log_axis::label`]); the zero line's tick is
+    /// labelled by [`draw_zero_tick`] instead.
     fn tick_label(&self, v: f64) -> String {
         if self.zero_at().is_some_and(|z| v < z * 3.0) {
             return String::new();
         }
-        if (9_999.5..1e5).contains(&v.abs()) {
-            format!("{v:.1e}").replace(".0e", "e")
-        } else {
-            style::fmt_sig(v)
-        }
+        log_axis::label(v)
     }
 }
 
@@ -501,8 +499,9 @@ fn draw_convergence_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, dat
     let x = 0.0..(n.saturating_sub(1) as f64).max(1.0);
     let desc = axis.desc("best cost");
     let zero = match axis {
-        CostAxis::Log { lo, hi, zero_at } => {
-            let chart = build(&plot_area, x, (lo..hi).log_scale(), &desc, |v: &f64| axis.tick_label(*v))?;
+        CostAxis::Log { lo, hi, zero_at, decades } => {
+            let y = DecadeAxis::with_range(lo, hi, decades);
+            let chart = build(&plot_area, x, y, &desc, |v: &f64| axis.tick_label(*v))?;
             let zero = zero_at.map(|z| (chart.backend_coord(&(0.0, z)), chart.backend_coord(&(0.0, z * 10.0))));
             draw_curves(chart, &series)?;
             zero
@@ -686,8 +685,9 @@ fn draw_box_panel<DB: DrawingBackend>(
     let desc = axis.desc("final cost");
     let base = body.get_base_pixel();
     let layout = match axis {
-        CostAxis::Log { lo, hi, .. } => {
-            let chart = build_box_chart(&plot_area, x, (lo..hi).log_scale(), &desc, |v: &f64| axis.tick_label(*v))?;
+        CostAxis::Log { lo, hi, decades, .. } => {
+            let y = DecadeAxis::with_range(lo, hi, decades);
+            let chart = build_box_chart(&plot_area, x, y, &desc, |v: &f64| axis.tick_label(*v))?;
             box_pixels(&chart, &stats, axis, base)
         }
         CostAxis::Linear { lo, hi } => {
@@ -915,8 +915,10 @@ mod tests {
     #[test]
     fn zeros_sit_below_the_smallest_positive_cost_on_a_log_axis() {
         let axis = CostAxis::for_values([0.0, 3e-8, 5.0, 200.0]).unwrap();
-        let CostAxis::Log { lo, hi, zero_at: Some(z) } = axis else { panic!("{axis:?}") };
-        assert!((z - 1e-9).abs() < 1e-24 && lo < z && hi == 1e3);
+        let CostAxis::Log { lo, hi, zero_at: Some(z), decades } = axis else { panic!("{axis:?}") };
+        // 3e-8 to 200 is labelled every other decade, from 1e-8 up to 1e4.
+        assert!((z - 1e-9).abs() < 1e-24 && lo < z && hi == 1e4);
+        assert_eq!(decades.exponents(), [-8, -6, -4, -2, 0, 2, 4]);
         assert_eq!(axis.map(0.0), z);
         assert_eq!(axis.map(5.0), 5.0);
         assert_eq!(axis.desc("best cost"), "best cost (log scale, 0 below break)");

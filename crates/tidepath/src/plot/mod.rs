@@ -11,6 +11,7 @@ pub mod contour;
 mod convergence;
 pub mod experiment;
 mod figure;
+mod log_axis;
 mod plan_view;
 mod profile;
 pub mod style;

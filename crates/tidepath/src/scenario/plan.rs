@@ -11,6 +11,7 @@ use crate::optim::{Budget, Progress};
 use crate::path::{Metrics, Violation};
 use crate::planner::{build_planner, Problem};
 use crate::rng::run_rng;
+use crate::smoothing::build_smoother;
 
 /// How to run one plan; `None` fields fall back to the scenario's `[planner]` section.
 #[derive(Clone, Debug, Default)]
@@ -25,6 +26,8 @@ pub struct PlanRequest {
     pub time_limit_s: Option<f64>,
     /// Evaluate populations on the rayon pool (results are identical either way).
     pub parallel: bool,
+    /// Smoother id; `None` uses the scenario's `[planner] smoother`, `Some("none")` disables it.
+    pub smoother: Option<String>,
 }
 
 /// A path judged against the scenario.
@@ -72,8 +75,14 @@ impl Scenario {
             start: self.start,
             goal: self.goal,
         };
+        let smoother = match req.smoother.as_deref().or(self.planner.smoother.as_deref()) {
+            None | Some("none") => None,
+            Some(id) => Some(build_smoother(id)?),
+        };
         let outcome = planner.plan(&problem, &budget, run_rng(req.seed, req.run), req.parallel, observer);
-        let eval = self.evaluate(&outcome.waypoints)?;
+        let smoothed = smoother.map(|s| s.smooth(&problem.model, cost.as_ref(), &outcome.waypoints));
+        let raw_cost = smoothed.as_ref().map(|_| outcome.cost);
+        let eval = self.evaluate(smoothed.as_deref().unwrap_or(&outcome.waypoints))?;
         Ok(PlanReport {
             tidepath_version: env!("CARGO_PKG_VERSION").to_string(),
             planner: id,
@@ -83,7 +92,8 @@ impl Scenario {
             cost_model: cost.id().to_string(),
             travel_time_model: self.settings.travel.id().to_string(),
             waypoints: outcome.waypoints.iter().map(|p| p.to_array()).collect(),
-            smoothed: None,
+            smoothed: smoothed.map(|p| p.iter().map(|q| q.to_array()).collect()),
+            raw_cost,
             cost: eval.cost,
             cost_terms: eval.terms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect(),
             feasible: eval.feasible,

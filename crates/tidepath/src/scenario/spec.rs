@@ -297,6 +297,8 @@ pub struct PlannerSpec {
     pub population: Option<usize>,
     /// Per-planner parameters: `[planner.params.pso]`, `[planner.params.ga]`, ...
     pub params: BTreeMap<String, toml::Table>,
+    /// A smoother every plan goes through (`shortcut`), or none.
+    pub smoother: Option<String>,
 }
 
 impl Default for PlannerSpec {
@@ -308,6 +310,7 @@ impl Default for PlannerSpec {
             time_limit_s: None,
             population: None,
             params: BTreeMap::new(),
+            smoother: None,
         }
     }
 }
