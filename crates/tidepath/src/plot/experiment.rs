@@ -124,8 +124,8 @@ fn color_index(order: &[&str], planner: &str) -> usize {
 }
 
 /// How a cost axis maps values: linear, or log10 labelled at `decades`, with zeros drawn on
-/// their own line at `zero_at`, a decade below the lowest labelled one and separated from it
-/// by an axis break.
+/// their own line at `zero_at`, a decade or more below the lowest labelled one and separated
+/// from it by an axis break.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum CostAxis {
     Linear { lo: f64, hi: f64 },
@@ -144,10 +144,12 @@ impl CostAxis {
             let decades = Decades::for_values(min_pos, hi)?;
             let (lo, hi) = (decades.lo(), decades.hi());
             if has_zero {
-                // The zero line sits a third of a decade above the bottom so it is not hidden
-                // by the x axis.
-                let z = lo / 10.0;
-                return Some(CostAxis::Log { lo: lo / 10f64.powf(1.35), hi, zero_at: Some(z), decades });
+                // The zero line sits a decade, or a tenth of the axis on one spanning many
+                // decades, below the lowest label, so "0" and that label never touch; and a
+                // third of that gap above the bottom so it is not hidden by the x axis.
+                let gap = (f64::from(decades.top - decades.bottom) * 0.1).max(1.0);
+                let z = lo / 10f64.powf(gap);
+                return Some(CostAxis::Log { lo: lo / 10f64.powf(1.35 * gap), hi, zero_at: Some(z), decades });
             }
             return Some(CostAxis::Log { lo, hi, zero_at: None, decades });
         }
@@ -167,6 +169,14 @@ impl CostAxis {
         match *self {
             CostAxis::Log { zero_at, .. } => zero_at,
             CostAxis::Linear { .. } => None,
+        }
+    }
+
+    /// The zero line and the lowest labelled decade above it, between which the axis breaks.
+    fn zero_gap(&self) -> Option<(f64, f64)> {
+        match *self {
+            CostAxis::Log { zero_at: Some(z), decades, .. } => Some((z, decades.lo())),
+            _ => None,
         }
     }
 
@@ -197,7 +207,7 @@ fn draw_zero_tick<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, axis_x: i32
     area.draw(&Text::new("0", (axis_x - 10, zero_y), text)).map_err(plot_err)?;
     area.draw(&PathElement::new(vec![(axis_x - 6, zero_y), (axis_x - 1, zero_y)], style::line(BLACK, 1)))
         .map_err(plot_err)?;
-    // The break: a gap in the axis line between two slashes, halfway to the next decade.
+    // The break: a gap in the axis line between two slashes, halfway to the lowest label.
     let y = zero_y - (gap / 2).clamp(5, 14);
     area.draw(&Rectangle::new([(axis_x - 4, y - 3), (axis_x + 2, y + 3)], style::fill(WHITE))).map_err(plot_err)?;
     for dy in [-3, 3] {
@@ -499,10 +509,10 @@ fn draw_convergence_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, dat
     let x = 0.0..(n.saturating_sub(1) as f64).max(1.0);
     let desc = axis.desc("best cost");
     let zero = match axis {
-        CostAxis::Log { lo, hi, zero_at, decades } => {
+        CostAxis::Log { lo, hi, decades, .. } => {
             let y = DecadeAxis::with_range(lo, hi, decades);
             let chart = build(&plot_area, x, y, &desc, |v: &f64| axis.tick_label(*v))?;
-            let zero = zero_at.map(|z| (chart.backend_coord(&(0.0, z)), chart.backend_coord(&(0.0, z * 10.0))));
+            let zero = axis.zero_gap().map(|(z, a)| (chart.backend_coord(&(0.0, z)), chart.backend_coord(&(0.0, a))));
             draw_curves(chart, &series)?;
             zero
         }
@@ -618,7 +628,7 @@ struct BoxPanelPx {
     /// Left edge and bottom of the plot.
     axis_x: i32,
     axis_y: i32,
-    /// The zero line and the decade above it, on a log axis with zeros.
+    /// The zero line and the lowest labelled decade above it, on a log axis with zeros.
     zero: Option<(i32, i32)>,
 }
 
@@ -659,7 +669,7 @@ where
             })
         })
         .collect();
-    let zero = axis.zero_at().map(|z| (px(0.0, z).1, px(0.0, z * 10.0).1));
+    let zero = axis.zero_gap().map(|(z, a)| (px(0.0, z).1, px(0.0, a).1));
     BoxPanelPx { boxes, slot, axis_x, axis_y, zero }
 }
 
@@ -916,8 +926,9 @@ mod tests {
     fn zeros_sit_below_the_smallest_positive_cost_on_a_log_axis() {
         let axis = CostAxis::for_values([0.0, 3e-8, 5.0, 200.0]).unwrap();
         let CostAxis::Log { lo, hi, zero_at: Some(z), decades } = axis else { panic!("{axis:?}") };
-        // 3e-8 to 200 is labelled every other decade, from 1e-8 up to 1e4.
-        assert!((z - 1e-9).abs() < 1e-24 && lo < z && hi == 1e4);
+        // 3e-8 to 200 is labelled every other decade, from 1e-8 up to 1e4; the zero line sits
+        // a tenth of those 12 decades below 1e-8.
+        assert!((z.log10() + 9.2).abs() < 1e-9 && lo < z && hi == 1e4);
         assert_eq!(decades.exponents(), [-8, -6, -4, -2, 0, 2, 4]);
         assert_eq!(axis.map(0.0), z);
         assert_eq!(axis.map(5.0), 5.0);
