@@ -2,7 +2,8 @@
 //!
 //! Compares ten ~10 ms optimizer runs called directly with the same ten runs executed through
 //! `experiments::runner` (task list, seed derivation, thread pool, result collection) on one
-//! worker thread, so the difference is the runner's own cost.
+//! worker thread, so the difference is the runner's own cost. "runner with no work" isolates that
+//! cost per experiment of ten tasks.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use tidepath::experiments::runner::{execute, tasks, Task};
@@ -44,10 +45,17 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("runner overhead (10 runs of ~10 ms)");
     g.sample_size(10);
     g.bench_function("direct calls", |b| b.iter(|| all.iter().map(|t| one_run(t.seed)).sum::<f64>()));
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
+    g.bench_function("direct calls on a rayon worker", |b| {
+        b.iter(|| pool.install(|| all.iter().map(|t| one_run(t.seed)).sum::<f64>()))
+    });
     g.bench_function("through experiments::runner, 1 job", |b| {
         b.iter(|| execute(&all, 1, |t| Ok(record(t, one_run(t.seed))), &|_| {}).unwrap())
     });
     g.finish();
+    c.bench_function("runner with no work (10 tasks, 1 job)", |b| {
+        b.iter(|| execute(&all, 1, |t| Ok(record(t, 0.0)), &|_| {}).unwrap())
+    });
 }
 
 criterion_group!(benches, bench);

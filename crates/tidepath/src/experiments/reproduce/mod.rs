@@ -33,6 +33,8 @@ pub struct ExperimentOutcome {
     pub comparison: Comparison,
     pub paper: PaperTable,
     pub claims: Vec<(Claim, ClaimVerdict)>,
+    /// Findings computed from the data that the table alone does not make obvious.
+    pub notes: Vec<String>,
 }
 
 /// Progress callback: (runs finished, runs in total).
@@ -50,7 +52,7 @@ pub struct Paper {
 
 pub const PAPERS: &[Paper] = &[Paper {
     id: "baselines",
-    title: "PSO and GA (and DE for reference) on seed 002's benchmark functions, Tables 2 and 4",
+    title: "PSO and GA (DE and a second GA reading for reference) on seed 002's benchmark functions, Tables 2 and 4",
     run: baselines::run,
 }];
 

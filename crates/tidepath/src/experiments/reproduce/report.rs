@@ -127,6 +127,12 @@ pub(super) fn write(paper: &Paper, opts: &ReproduceOptions, outcomes: &[Experime
                 mark
             );
         }
+        if !o.notes.is_empty() {
+            let _ = writeln!(md, "\n### Findings\n");
+            for n in &o.notes {
+                let _ = writeln!(md, "- {n}");
+            }
+        }
         let _ = writeln!(md, "\n### Claims\n");
         for (claim, verdict) in &o.claims {
             let p = match verdict {
