@@ -65,7 +65,8 @@ where
 /// threads start with cold caches and empty allocator arenas, which cost a few per cent of a
 /// 10 ms run; warm ones cost nothing measurable.
 fn pool(jobs: usize) -> Result<Arc<rayon::ThreadPool>> {
-    static POOLS: OnceLock<Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>>> = OnceLock::new();
+    type Pools = Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>>;
+    static POOLS: OnceLock<Pools> = OnceLock::new();
     let mut pools = POOLS.get_or_init(|| Mutex::new(Vec::new())).lock().unwrap_or_else(|e| e.into_inner());
     if let Some((_, p)) = pools.iter().find(|(n, _)| *n == jobs) {
         return Ok(p.clone());
