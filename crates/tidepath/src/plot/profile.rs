@@ -72,11 +72,18 @@ pub fn draw_profile<DB: DrawingBackend>(
         vec![Vec::new(); paths.len()]
     };
 
-    // Vertical range: the domain's water column, stretched to hold every path point.
+    // Vertical range: the domain's water column, stretched to hold every path point and, in a
+    // 2-D world (where the column is flat), the seabed under the paths: there the profile is
+    // the depth of water under the keel.
     let (mut lo, mut hi) = (b.min.z, b.max.z);
     for z in paths.iter().flat_map(|p| p.points.iter().map(|q| q.z)).filter(|z| z.is_finite()) {
         lo = lo.min(z);
         hi = hi.max(z);
+    }
+    if world.dims == crate::world::Dims::Two {
+        for &(_, z) in seabeds.iter().flatten().filter(|(_, z)| z.is_finite()) {
+            lo = lo.min(z);
+        }
     }
     if !(lo.is_finite() && hi.is_finite()) {
         (lo, hi) = (-1.0, 0.0);
