@@ -20,21 +20,8 @@ pub struct CompareArgs {
     /// Runs per planner.
     #[arg(long, default_value_t = 30)]
     pub runs: u64,
-    /// Parallel runs (default: all cores). Results do not depend on it.
-    #[arg(long)]
-    pub jobs: Option<usize>,
-    /// Master seed; run i of planner P uses a seed derived from (seed, scenario, P, i).
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Iteration budget per run (overrides the scenario).
-    #[arg(long)]
-    pub iterations: Option<u64>,
-    /// Evaluation budget per run (overrides the scenario).
-    #[arg(long)]
-    pub evaluations: Option<u64>,
-    /// Population size for every planner.
-    #[arg(long)]
-    pub population: Option<usize>,
+    #[command(flatten)]
+    pub run: super::budget::BudgetArgs,
     /// Write results.json, runs.csv, convergence.svg, boxplot.svg and paths.svg here.
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -45,16 +32,16 @@ pub struct CompareArgs {
 
 pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
-    let jobs = crate::jobs(args.jobs)?;
+    let jobs = crate::jobs(args.run.jobs)?;
     let budget = RunBudget {
-        iterations: args.iterations,
-        evaluations: args.evaluations,
-        population: args.population,
+        iterations: args.run.iterations,
+        evaluations: args.run.evaluations,
+        population: args.run.population,
         time_limit_s: None,
     };
     let total = args.planners.len() * args.runs as usize;
     let bar = RunsBar::new("compare", total);
-    let result = compare_scenario(&scenario, &args.planners, args.runs, args.seed, &budget, jobs, &|n| bar.set(n));
+    let result = compare_scenario(&scenario, &args.planners, args.runs, args.run.seed, &budget, jobs, &|n| bar.set(n));
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {
@@ -65,7 +52,7 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     }
     println!(
         "{} — {} runs per planner, master seed {}, {:.1} s\n",
-        scenario.name, args.runs, args.seed, c.total_wall_s
+        scenario.name, args.runs, args.run.seed, c.total_wall_s
     );
     print!("{}", markdown(&c.rows, false));
     println!("\nMarks: Wilcoxon rank-sum against {} (two-sided, alpha 0.05): + {} significantly better, ≈ no significant difference, - significantly worse.", args.planners[0], args.planners[0]);

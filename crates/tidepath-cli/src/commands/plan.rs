@@ -16,27 +16,14 @@ pub struct PlanArgs {
     /// Planner id (see `tidepath planners`); defaults to the scenario's `[planner] id`.
     #[arg(long)]
     pub planner: Option<String>,
-    /// Master seed; the same seed reproduces the run bit for bit.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Iteration budget (overrides the scenario).
-    #[arg(long)]
-    pub iterations: Option<u64>,
-    /// Evaluation budget (overrides the scenario).
-    #[arg(long)]
-    pub evaluations: Option<u64>,
-    /// Population size (overrides the planner's parameters).
-    #[arg(long)]
-    pub population: Option<usize>,
+    #[command(flatten)]
+    pub run: super::budget::BudgetArgs,
     /// Wall-time safety net in seconds; a run stopped by it depends on the machine.
     #[arg(long)]
     pub time_limit: Option<f64>,
     /// Smooth the plan (`shortcut`, or `none` to override the scenario's smoother).
     #[arg(long)]
     pub smooth: Option<String>,
-    /// Threads for evaluating populations (default: all cores). Results do not depend on it.
-    #[arg(long)]
-    pub jobs: Option<usize>,
     /// Write the plan as JSON here.
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -47,7 +34,7 @@ pub struct PlanArgs {
 
 pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
-    if let Some(j) = args.jobs {
+    if let Some(j) = args.run.jobs {
         if j == 0 {
             return Err(Error::input("--jobs", "must be at least 1, got 0"));
         }
@@ -63,11 +50,11 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     }
     let req = PlanRequest {
         planner: args.planner.clone(),
-        seed: args.seed,
+        seed: args.run.seed,
         run: 0,
-        iterations: args.iterations,
-        evaluations: args.evaluations,
-        population: args.population,
+        iterations: args.run.iterations,
+        evaluations: args.run.evaluations,
+        population: args.run.population,
         time_limit_s: args.time_limit,
         parallel: true,
         smoother: args.smooth.clone(),
