@@ -30,6 +30,8 @@ pub enum RangeKind {
     Small,
     /// Seed 002 Table 3 (wide ranges).
     Wide,
+    /// Seed 000 Table 2: each function's own dimension and range (overrides --dim).
+    Seed000,
 }
 
 #[derive(Args)]
@@ -86,8 +88,15 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
                 ),
             )
         })?;
-        let dim = function.fixed_dim().unwrap_or(args.dim);
+        let mut dim = function.fixed_dim().unwrap_or(args.dim);
         let (lo, hi, tag) = match args.range {
+            RangeKind::Seed000 => {
+                let (d, lo, hi) = function
+                    .seed000_setting()
+                    .ok_or_else(|| Error::input("--range", format!("seed 000 gives no setting for {name}")))?;
+                dim = d;
+                (lo, hi, "seed000")
+            }
             RangeKind::Standard => {
                 let (lo, hi) = function.default_range(dim);
                 (lo, hi, "standard")

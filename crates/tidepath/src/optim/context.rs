@@ -9,6 +9,9 @@ use crate::rng::Rng;
 /// the best point seen, in evaluation order (ties keep the earlier point).
 pub struct Context<'a> {
     objective: &'a dyn Objective,
+    /// Copies of the bounds, so optimizers' inner loops read them without a virtual call.
+    lower: Vec<f64>,
+    upper: Vec<f64>,
     rng: Rng,
     evaluations: u64,
     eval_limit: u64,
@@ -22,6 +25,8 @@ impl<'a> Context<'a> {
     pub fn new(objective: &'a dyn Objective, rng: Rng, eval_limit: Option<u64>, parallel: bool) -> Self {
         Self {
             objective,
+            lower: objective.lower().to_vec(),
+            upper: objective.upper().to_vec(),
             rng,
             evaluations: 0,
             eval_limit: eval_limit.unwrap_or(u64::MAX),
@@ -36,15 +41,18 @@ impl<'a> Context<'a> {
         self.objective.dim()
     }
 
+    #[inline]
     pub fn lower(&self) -> &[f64] {
-        self.objective.lower()
+        &self.lower
     }
 
+    #[inline]
     pub fn upper(&self) -> &[f64] {
-        self.objective.upper()
+        &self.upper
     }
 
     /// Width of the box in dimension `d`.
+    #[inline]
     pub fn range(&self, d: usize) -> f64 {
         self.upper()[d] - self.lower()[d]
     }

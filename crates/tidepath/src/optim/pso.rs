@@ -254,23 +254,26 @@ impl Optimizer for Pso {
         let (c1, c2) = (self.params.c1, self.params.c2);
         let dim = self.x.dim();
         for i in 0..self.x.len() {
+            let x = self.x.row_mut(i);
+            let v = &mut self.v[i * dim..(i + 1) * dim];
+            let pbest = self.pbest.row(i);
             for d in 0..dim {
+                // Two draws per dimension, r1 then r2: the order fixes the random stream.
                 let r1: f64 = ctx.rng().random();
                 let r2: f64 = ctx.rng().random();
-                let xi = self.x.row(i)[d];
-                let vi = &mut self.v[i * dim + d];
+                let xi = x[d];
                 let vmax = self.vmax[d];
-                let nv = w * *vi + c1 * r1 * (self.pbest.row(i)[d] - xi) + c2 * r2 * (self.gbest[d] - xi);
-                *vi = nv.clamp(-vmax, vmax);
-                let mut nx = xi + *vi;
+                let nv = w * v[d] + c1 * r1 * (pbest[d] - xi) + c2 * r2 * (self.gbest[d] - xi);
+                v[d] = nv.clamp(-vmax, vmax);
+                let mut nx = xi + v[d];
                 let (lo, hi) = (ctx.lower()[d], ctx.upper()[d]);
                 if nx < lo || nx > hi {
                     nx = nx.clamp(lo, hi);
-                    *vi = 0.0;
+                    v[d] = 0.0;
                 }
-                self.x.row_mut(i)[d] = nx;
+                x[d] = nx;
             }
-            ctx.repair(self.x.row_mut(i));
+            ctx.repair(x);
         }
         ctx.evaluate_population(&self.x, &mut self.cost);
         self.update_bests();
