@@ -40,7 +40,7 @@ fn compare_writes_all_files_and_is_independent_of_jobs() {
     for p in ["| pso |", "| ga |", "| de |", "vs pso", "ref"] {
         assert!(stdout.contains(p), "missing {p} in\n{stdout}");
     }
-    for f in ["results.json", "runs.csv", "convergence.svg", "boxplot.svg", "paths.svg"] {
+    for f in ["results.json", "runs.csv", "table.md", "convergence.svg", "boxplot.svg", "paths.svg"] {
         assert!(a.join(f).is_file(), "{f} missing");
     }
     let csv = std::fs::read_to_string(a.join("runs.csv")).unwrap();

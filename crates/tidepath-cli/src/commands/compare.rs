@@ -22,7 +22,7 @@ pub struct CompareArgs {
     pub runs: u64,
     #[command(flatten)]
     pub run: super::budget::BudgetArgs,
-    /// Write results.json, runs.csv, convergence.svg, boxplot.svg and paths.svg here.
+    /// Write results.json, runs.csv, table.md, convergence.svg, boxplot.svg and paths.svg here.
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Also write an OMPL benchmark log (load it with `ompl_benchmark_statistics`).
@@ -57,7 +57,10 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     print!("{}", markdown(&c.rows, false));
     println!("\nMarks: Wilcoxon rank-sum against {} (two-sided, alpha 0.05): + {} significantly better, ≈ no significant difference, - significantly worse.", args.planners[0], args.planners[0]);
     if let Some(dir) = &args.out {
-        println!("Wrote {}/{{results.json, runs.csv, convergence.svg, boxplot.svg, paths.svg}}", dir.display());
+        println!(
+            "Wrote {}/{{results.json, runs.csv, table.md, convergence.svg, boxplot.svg, paths.svg}}",
+            dir.display()
+        );
     }
     Ok(Outcome::Success)
 }

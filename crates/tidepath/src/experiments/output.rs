@@ -56,11 +56,12 @@ pub fn ensure_dir(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))
 }
 
-/// Writes results.json and runs.csv into `dir`.
+/// Writes results.json, runs.csv and table.md (the Markdown table printed on stdout) into `dir`.
 pub fn write_tables(c: &Comparison, dir: &Path) -> Result<()> {
     ensure_dir(dir)?;
     write_atomic(&dir.join("results.json"), results_json(c).as_bytes())?;
     write_atomic(&dir.join("runs.csv"), runs_csv(c).as_bytes())?;
+    write_atomic(&dir.join("table.md"), super::table::markdown(&c.rows, c.is_functions()).as_bytes())?;
     Ok(())
 }
 
