@@ -37,6 +37,20 @@ pub fn planner_info(id: &str) -> Option<&'static PlannerInfo> {
     PLANNERS.iter().find(|p| p.id == id)
 }
 
+/// Parameter checks name `planner.params.FIELD`; the scenario key is `planner.params.ID.FIELD`.
+fn scoped(e: Error, id: &str) -> Error {
+    match e {
+        Error::Input { field, message } => {
+            let field = match field.strip_prefix("planner.params.") {
+                Some(rest) if !rest.starts_with(&format!("{id}.")) => format!("planner.params.{id}.{rest}"),
+                _ => field,
+            };
+            Error::Input { field, message }
+        }
+        other => other,
+    }
+}
+
 fn unknown(id: &str) -> Error {
     Error::input(
         "planner",
@@ -69,17 +83,17 @@ pub fn build_optimizer(
     Ok(match id {
         "pso" => {
             let p: PsoParams = crate::scenario::from_value(value, &prefix)?;
-            p.check()?;
+            p.check().map_err(|e| scoped(e, id))?;
             Box::new(Pso::new(p))
         }
         "ga" => {
             let p: GaParams = crate::scenario::from_value(value, &prefix)?;
-            p.check()?;
+            p.check().map_err(|e| scoped(e, id))?;
             Box::new(Ga::new(p))
         }
         "de" => {
             let p: DeParams = crate::scenario::from_value(value, &prefix)?;
-            p.check()?;
+            p.check().map_err(|e| scoped(e, id))?;
             Box::new(De::new(p))
         }
         other => return Err(unknown(other)),

@@ -64,6 +64,14 @@ impl Scenario {
         // Build once so configuration errors surface at load time, not mid-run.
         scenario.cost_model()?;
         scenario.build_encoding()?;
+        let planner = &scenario.planner;
+        crate::planner::build_planner(&planner.id, planner.params.get(&planner.id), planner.population)?;
+        for (id, table) in &planner.params {
+            crate::planner::build_planner(id, Some(table), planner.population)?;
+        }
+        if let Some(id) = planner.smoother.as_deref().filter(|s| *s != "none") {
+            crate::smoothing::build_smoother(id)?;
+        }
         Ok(scenario)
     }
 

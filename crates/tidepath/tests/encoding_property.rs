@@ -1,0 +1,61 @@
+//! Encodings own their bounds: any vector inside them decodes to waypoints inside the domain
+//! and depth band, for any start and goal, and the path always runs from start to goal.
+
+use proptest::prelude::*;
+use tidepath::encoding::{Encoding, FreeWaypoints, Sliced};
+use tidepath::geom::{Aabb, Vec3};
+
+fn domain() -> Aabb {
+    Aabb::new(Vec3::new(-500.0, 200.0, -300.0), Vec3::new(4500.0, 2200.0, 0.0))
+}
+
+fn point() -> impl Strategy<Value = Vec3> {
+    (-500.0..4500.0f64, 200.0..2200.0f64, -250.0..-10.0f64).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+/// A vector inside the encoding's box, from unit draws.
+fn inside(enc: &dyn Encoding, u: &[f64]) -> Vec<f64> {
+    enc.lower().iter().zip(enc.upper()).zip(u.iter().cycle()).map(|((lo, hi), t)| lo + t * (hi - lo)).collect()
+}
+
+proptest! {
+    #[test]
+    fn sliced_waypoints_stay_in_the_domain(
+        start in point(),
+        goal in point(),
+        n in 1usize..25,
+        u in prop::collection::vec(0.0..=1.0f64, 1..60),
+    ) {
+        prop_assume!((goal - start).truncate().length() > 1.0);
+        let band = (-280.0, -5.0);
+        let enc = Sliced::new(start, goal, n, &domain(), Some(band)).unwrap();
+        let path = enc.decode(&inside(&enc, &u));
+        prop_assert_eq!(path.len(), n + 2);
+        prop_assert_eq!(path[0], start);
+        prop_assert_eq!(path[n + 1], goal);
+        let d = domain();
+        for p in &path[1..=n] {
+            prop_assert!(d.contains(*p), "{:?} outside the domain", p);
+            prop_assert!(p.z >= band.0 && p.z <= band.1, "{:?} outside the depth band", p);
+        }
+        // Waypoints advance monotonically along the start-goal axis.
+        let axis = (goal - start).truncate().normalize();
+        let s: Vec<f64> = path.iter().map(|p| (p.truncate() - start.truncate()).dot(axis)).collect();
+        prop_assert!(s.windows(2).all(|w| w[1] > w[0] - 1e-9), "stations not increasing: {:?}", s);
+    }
+
+    #[test]
+    fn free_waypoints_stay_in_the_domain(
+        start in point(),
+        goal in point(),
+        n in 1usize..25,
+        u in prop::collection::vec(0.0..=1.0f64, 1..90),
+    ) {
+        let enc = FreeWaypoints::new(start, goal, n, &domain(), Some((-280.0, -5.0))).unwrap();
+        let path = enc.decode(&inside(&enc, &u));
+        prop_assert_eq!(path.len(), n + 2);
+        for p in &path {
+            prop_assert!(domain().contains(*p), "{:?}", p);
+        }
+    }
+}
