@@ -34,12 +34,9 @@ pub struct PlanArgs {
 
 pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
-    if let Some(j) = args.run.jobs {
-        if j == 0 {
-            return Err(Error::input("--jobs", "must be at least 1, got 0"));
-        }
+    if args.run.jobs.is_some() {
         // Only the first pool configuration counts; a fresh process has none yet.
-        let _ = rayon::ThreadPoolBuilder::new().num_threads(j).build_global();
+        let _ = rayon::ThreadPoolBuilder::new().num_threads(crate::jobs(args.run.jobs)?).build_global();
     }
     for (flag, path) in [("--out", &args.out), ("--plot", &args.plot)] {
         if let Some(dir) = path.as_ref().and_then(|p| p.parent()).filter(|d| !d.as_os_str().is_empty()) {
