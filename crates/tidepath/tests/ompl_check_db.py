@@ -9,7 +9,7 @@ Optional CI step, needs `pip install ompl` (verified with 2.0.1):
     ompl_benchmark_statistics /tmp/tidepath_ompl.log -d /tmp/tidepath_ompl.db
     python3 crates/tidepath/tests/ompl_check_db.py /tmp/tidepath_ompl.db
 
-The expected values mirror `fixture()` in crates/tidepath/src/experiments/ompl_log.rs.
+The expected values mirror `fixture()` in crates/tidepath/src/experiments/ompl_log/tests.rs.
 Standard library only.
 """
 

@@ -1,0 +1,139 @@
+//! Gridded currents: u, v layers on a regular grid, interpolated in space and time.
+
+use crate::error::{Error, Result};
+use crate::geom::{Aabb, Vec3};
+use crate::world::grid::RegularGrid2;
+
+/// u, v components on a regular grid at a list of times; bilinear in space, linear in time.
+///
+/// Build it with `CurrentGrid::new`: `velocity` relies on its checks (at least one layer,
+/// every layer full) and does not repeat them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurrentGrid {
+    pub grid: RegularGrid2,
+    /// Strictly increasing times (s) of the layers.
+    pub times: Vec<f64>,
+    /// One row-major layer per time.
+    pub u: Vec<Vec<f64>>,
+    pub v: Vec<Vec<f64>>,
+}
+
+impl CurrentGrid {
+    /// Checks the layers; `field` names the scenario field for error messages, which give the
+    /// offending layer, node and value so a broken data file can be found.
+    pub fn new(grid: RegularGrid2, times: Vec<f64>, u: Vec<Vec<f64>>, v: Vec<Vec<f64>>, field: &str) -> Result<Self> {
+        if times.is_empty() {
+            return Err(Error::input(format!("{field}.times"), "needs at least one layer, got none"));
+        }
+        for (k, &t) in times.iter().enumerate() {
+            if !t.is_finite() {
+                return Err(Error::input(format!("{field}.times"), format!("times[{k}] is {t}; must be finite")));
+            }
+            if k > 0 && t <= times[k - 1] {
+                return Err(Error::input(
+                    format!("{field}.times"),
+                    format!(
+                        "must be strictly increasing, but times[{k}] = {t} follows times[{}] = {}",
+                        k - 1,
+                        times[k - 1]
+                    ),
+                ));
+            }
+        }
+        for (name, layers) in [("u", &u), ("v", &v)] {
+            let name = format!("{field}.{name}");
+            if layers.len() != times.len() {
+                return Err(Error::input(name, format!("has {} layers but times has {}", layers.len(), times.len())));
+            }
+            for (l, layer) in layers.iter().enumerate() {
+                if layer.len() != grid.len() {
+                    return Err(Error::input(
+                        name,
+                        format!(
+                            "layer {l} has {} values; the grid has {} x {} = {} nodes",
+                            layer.len(),
+                            grid.nx,
+                            grid.ny,
+                            grid.len()
+                        ),
+                    ));
+                }
+                if let Some(k) = layer.iter().position(|x| !x.is_finite()) {
+                    return Err(Error::input(
+                        name,
+                        format!(
+                            "layer {l}, value {k} (node i = {}, j = {}) is {}; must be finite",
+                            k % grid.nx,
+                            k / grid.nx,
+                            layer[k]
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(Self { grid, times, u, v })
+    }
+
+    /// The two layers around `t` and the weight of the second; outside the time range the
+    /// nearest layer holds, since extrapolating a forecast in time is worse than freezing it.
+    #[inline]
+    fn bracket(&self, t: f64) -> (usize, usize, f64) {
+        let n = self.times.len();
+        // NaN goes to the first layer rather than to an out-of-range index.
+        if n == 1 || t.is_nan() || t <= self.times[0] {
+            return (0, 0, 0.0);
+        }
+        if t >= self.times[n - 1] {
+            return (n - 1, n - 1, 0.0);
+        }
+        let k = self.times.partition_point(|&s| s <= t);
+        (k - 1, k, (t - self.times[k - 1]) / (self.times[k] - self.times[k - 1]))
+    }
+
+    /// Velocity at (x, y) and time t (s); w = 0. Outside the grid the edge values hold.
+    #[inline]
+    pub fn velocity(&self, x: f64, y: f64, t: f64) -> Vec3 {
+        let g = &self.grid;
+        let (i, j, fu, fv) = g.locate(x, y);
+        let k = j * g.nx + i;
+        let (l0, l1, w) = self.bracket(t);
+        let mut u = lerp2(&self.u[l0], k, g.nx, fu, fv);
+        let mut v = lerp2(&self.v[l0], k, g.nx, fu, fv);
+        if w > 0.0 {
+            u += (lerp2(&self.u[l1], k, g.nx, fu, fv) - u) * w;
+            v += (lerp2(&self.v[l1], k, g.nx, fu, fv) - v) * w;
+        }
+        Vec3::new(u, v, 0.0)
+    }
+
+    /// Largest horizontal speed at time t over the nodes of the cells that touch `bounds`.
+    /// Exact: an interpolated vector is a convex combination of node vectors, so its length
+    /// never exceeds the longest of them.
+    pub(super) fn max_speed(&self, bounds: &Aabb, t: f64) -> f64 {
+        let g = &self.grid;
+        let (i0, j0, _, _) = g.locate(bounds.min.x, bounds.min.y);
+        let (i1, j1, _, _) = g.locate(bounds.max.x, bounds.max.y);
+        let (l0, l1, w) = self.bracket(t);
+        let mut peak: f64 = 0.0;
+        for j in j0..=(j1 + 1) {
+            for i in i0..=(i1 + 1) {
+                let k = j * g.nx + i;
+                let u = self.u[l0][k] + (self.u[l1][k] - self.u[l0][k]) * w;
+                let v = self.v[l0][k] + (self.v[l1][k] - self.v[l0][k]) * w;
+                peak = peak.max(u.hypot(v));
+            }
+        }
+        peak
+    }
+}
+
+/// `RegularGrid2::bilinear` for an already located cell, in the same operation order so the
+/// results are bit-identical; locating once serves all four interpolations.
+#[inline]
+fn lerp2(values: &[f64], k: usize, nx: usize, fu: f64, fv: f64) -> f64 {
+    let (a, b) = (values[k], values[k + 1]);
+    let (c, d) = (values[k + nx], values[k + nx + 1]);
+    let lo = a + (b - a) * fu;
+    let hi = c + (d - c) * fu;
+    lo + (hi - lo) * fv
+}

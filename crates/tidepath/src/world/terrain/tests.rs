@@ -1,0 +1,208 @@
+use super::*;
+use crate::world::grid::RegularGrid2;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+fn one_peak(ceiling: Option<f64>) -> Terrain {
+    Terrain::Peaks(GaussianPeaks {
+        base: -100.0,
+        peaks: vec![Peak { x: 10.0, y: 20.0, height: 40.0, sigma_x: 2.0, sigma_y: 5.0 }],
+        ceiling,
+    })
+}
+
+#[test]
+fn peak_elevation_at_centre_and_one_sigma() {
+    let t = one_peak(None);
+    assert_eq!(t.elevation(10.0, 20.0), -60.0);
+    // One sigma east: -100 + 40 / e.
+    let e1 = -100.0 + 40.0 * (-1.0f64).exp();
+    assert!((t.elevation(12.0, 20.0) - e1).abs() < 1e-12);
+    // One sigma in both directions: -100 + 40 / e^2.
+    let e2 = -100.0 + 40.0 * (-2.0f64).exp();
+    assert!((t.elevation(8.0, 25.0) - e2).abs() < 1e-12);
+    // Far away: the base.
+    assert!((t.elevation(1e4, 20.0) + 100.0).abs() < 1e-12);
+}
+
+#[test]
+fn ceiling_caps_elevation_and_bound() {
+    let t = one_peak(Some(-70.0));
+    assert_eq!(t.elevation(10.0, 20.0), -70.0);
+    assert_eq!(t.max_elevation_in(0.0, 0.0, 50.0, 50.0), -70.0);
+    // Below the cap the peak is untouched: at 2 sigma_x, -100 + 40 e^-4 < -70.
+    let v = -100.0 + 40.0 * (-4.0f64).exp();
+    assert!((t.elevation(14.0, 20.0) - v).abs() < 1e-12);
+}
+
+#[test]
+fn paper_k_parametrisation_sets_width_from_centre() {
+    // x_j = 10, k_x = 5 -> sigma_x = 2; y_j = 20, k_y = 4 -> sigma_y = 5.
+    let p = Peak::from_paper_k(10.0, 20.0, 40.0, 5.0, 4.0, "t").unwrap();
+    assert_eq!((p.sigma_x, p.sigma_y), (2.0, 5.0));
+    let g = GaussianPeaks::from_paper_k(1.0, &[[10.0, 20.0, 40.0, 5.0, 4.0]], Some(30.0), "t").unwrap();
+    assert_eq!(g.peaks[0], p);
+    assert_eq!(g.ceiling, Some(30.0));
+    assert!(Peak::from_paper_k(-1.0, 20.0, 1.0, 1.0, 1.0, "t").is_err());
+    assert!(Peak::from_paper_k(1.0, 20.0, 1.0, 0.0, 1.0, "t").is_err());
+    let err = GaussianPeaks::from_paper_k(0.0, &[[1.0, 1.0, 1.0, 1.0, 1.0], [0.0, 1.0, 1.0, 1.0, 1.0]], None, "t")
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("t.peaks[1]"), "{err}");
+}
+
+#[test]
+fn seabed_eq11_matches_paper_formula() {
+    let (x0, y0, h, a, b, s) = (3.0, 4.0, 7.0, 0.8, 1.3, 2.0);
+    let p = Peak::from_seabed_eq11(x0, y0, h, a, b, s, "t").unwrap();
+    let t = Terrain::Peaks(GaussianPeaks { base: 0.0, peaks: vec![p], ceiling: None });
+    let (x, y): (f64, f64) = (4.1, 2.5);
+    let want = h * (-((y - y0).powi(2) * a * a + (x - x0).powi(2) * b * b) / (2.0 * s * s)).exp();
+    assert!((t.elevation(x, y) - want).abs() < 1e-12);
+}
+
+fn small_grid() -> Terrain {
+    // Nodes: (10,20)=1 (12,20)=3 (14,20)=5 ; (10,24)=2 (12,24)=6 (14,24)=4
+    let g = RegularGrid2::new(10.0, 20.0, 2.0, 4.0, 3, 2, "g").unwrap();
+    Terrain::Grid(ElevationGrid::new(g, vec![1.0, 3.0, 5.0, 2.0, 6.0, 4.0], "g").unwrap())
+}
+
+#[test]
+fn grid_elevation_is_bilinear() {
+    let t = small_grid();
+    assert_eq!(t.elevation(12.0, 24.0), 6.0);
+    assert!((t.elevation(11.0, 22.0) - 3.0).abs() < 1e-12);
+    assert!((t.elevation(13.0, 21.0) - 4.25).abs() < 1e-12);
+    // Outside: clamped to the edge.
+    assert_eq!(t.elevation(-5.0, 100.0), 2.0);
+}
+
+#[test]
+fn grid_bound_is_exact_on_small_rectangles_and_clamps_outside() {
+    let t = small_grid();
+    let tol = 1e-12;
+    // Whole grid: the highest node.
+    assert!((t.max_elevation_in(0.0, 0.0, 100.0, 100.0) - 6.0).abs() < tol);
+    // First cell, lower half (v in [0, 0.5]): corners 1, 3, 1.5, 4.5 -> 4.5.
+    assert!((t.max_elevation_in(10.0, 20.0, 12.0, 22.0) - 4.5).abs() < tol);
+    // A point: its own value.
+    assert!((t.max_elevation_in(13.0, 21.0, 13.0, 21.0) - 4.25).abs() < tol);
+    // Entirely west of the grid: the west edge, nodes 1 and 2.
+    assert!((t.max_elevation_in(-50.0, 0.0, -40.0, 100.0) - 2.0).abs() < tol);
+}
+
+#[test]
+fn grid_rejects_bad_values() {
+    let g = RegularGrid2::new(0.0, 0.0, 1.0, 1.0, 2, 2, "g").unwrap();
+    let err = ElevationGrid::new(g.clone(), vec![0.0; 3], "terrain").unwrap_err().to_string();
+    assert!(err.contains("terrain.elevations") && err.contains('3'), "{err}");
+    let err = ElevationGrid::new(g, vec![0.0, 1.0, f64::NAN, 2.0], "terrain").unwrap_err().to_string();
+    assert!(err.contains("terrain.elevations") && err.contains("value 2") && err.contains("NaN"), "{err}");
+}
+
+/// Dense sampling of the rectangle (including its corners and edges) must never find a point
+/// above the bound.
+fn check_bound_against_samples(t: &Terrain, rng: &mut ChaCha8Rng, lo: (f64, f64), hi: (f64, f64)) {
+    for _ in 0..300 {
+        let (xa, xb) = (rng.random_range(lo.0..hi.0), rng.random_range(lo.0..hi.0));
+        let (ya, yb) = (rng.random_range(lo.1..hi.1), rng.random_range(lo.1..hi.1));
+        // Mix large and tiny rectangles.
+        let shrink = if rng.random_bool(0.3) { 1e-3 } else { 1.0 };
+        let (x0, x1) = (xa.min(xb), xa.min(xb) + (xa - xb).abs() * shrink);
+        let (y0, y1) = (ya.min(yb), ya.min(yb) + (ya - yb).abs() * shrink);
+        let bound = t.max_elevation_in(x0, y0, x1, y1);
+        let n = 40;
+        let mut sampled = f64::NEG_INFINITY;
+        for i in 0..=n {
+            for j in 0..=n {
+                let x = x0 + (x1 - x0) * i as f64 / n as f64;
+                let y = y0 + (y1 - y0) * j as f64 / n as f64;
+                sampled = sampled.max(t.elevation(x.min(x1), y.min(y1)));
+            }
+        }
+        assert!(bound >= sampled, "bound {bound} < sampled {sampled} on [{x0}, {x1}] x [{y0}, {y1}]");
+    }
+}
+
+#[test]
+fn peak_bound_never_below_dense_samples() {
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    for _ in 0..20 {
+        let peaks = (0..rng.random_range(1..6))
+            .map(|_| Peak {
+                x: rng.random_range(0.0..100.0),
+                y: rng.random_range(0.0..100.0),
+                height: rng.random_range(-40.0..40.0),
+                sigma_x: rng.random_range(2.0..20.0),
+                sigma_y: rng.random_range(2.0..20.0),
+            })
+            .collect();
+        let ceiling = rng.random_bool(0.3).then(|| rng.random_range(-60.0..-20.0));
+        let t = Terrain::Peaks(GaussianPeaks { base: -50.0, peaks, ceiling });
+        check_bound_against_samples(&t, &mut rng, (-20.0, -20.0), (120.0, 120.0));
+    }
+}
+
+#[test]
+fn grid_bound_never_below_dense_samples() {
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    for _ in 0..20 {
+        let (nx, ny) = (rng.random_range(2..40), rng.random_range(2..40));
+        let g =
+            RegularGrid2::new(-5.0, 3.0, rng.random_range(0.5..5.0), rng.random_range(0.5..5.0), nx, ny, "g").unwrap();
+        let z = (0..nx * ny).map(|_| rng.random_range(-100.0..-10.0)).collect();
+        let (xm, ym) = (g.x_max(), g.y_max());
+        let t = Terrain::Grid(ElevationGrid::new(g, z, "g").unwrap());
+        check_bound_against_samples(&t, &mut rng, (-20.0, -10.0), (xm + 10.0, ym + 10.0));
+    }
+}
+
+#[test]
+fn grid_exact_min_clearance_matches_dense_sampling() {
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let g = RegularGrid2::new(0.0, 0.0, 2.0, 3.0, 6, 5, "g").unwrap();
+    let z: Vec<f64> = (0..30).map(|_| rng.random_range(-50.0..-10.0)).collect();
+    let t = Terrain::Grid(ElevationGrid::new(g, z, "g").unwrap());
+    let mut settled = 0;
+    for _ in 0..500 {
+        // Short segments (some leaving the grid) so that many fit in 2 x 2 cells.
+        let a = Vec3::new(rng.random_range(-2.0..12.0), rng.random_range(-2.0..14.0), rng.random_range(-40.0..0.0));
+        let b = a + Vec3::new(rng.random_range(-3.0..3.0), rng.random_range(-4.0..4.0), rng.random_range(-5.0..5.0));
+        let Some(m) = t.exact_min_clearance(a, b, 0.0, 1.0) else { continue };
+        settled += 1;
+        let n = 4000;
+        let sampled = (0..=n)
+            .map(|k| {
+                let p = a + (b - a) * (k as f64 / n as f64);
+                p.z - t.elevation(p.x, p.y)
+            })
+            .fold(f64::INFINITY, f64::min);
+        // Exact minimum: never above a sample, and samples 1/4000 apart come within the
+        // clearance's change over half a step.
+        let step = (b - a).length() * (1.0 + 20.0) / n as f64;
+        assert!(m <= sampled + 1e-12 && m >= sampled - step, "exact {m} vs sampled {sampled}");
+    }
+    assert!(settled > 100, "only {settled} segments settled exactly");
+}
+
+#[test]
+fn bounds_shrink_to_the_point_value() {
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    let t = one_peak(None);
+    let g = RegularGrid2::new(0.0, 0.0, 1.0, 1.0, 5, 5, "g").unwrap();
+    let grid = Terrain::Grid(ElevationGrid::new(g, (0..25).map(|k| (k * 7 % 11) as f64).collect(), "g").unwrap());
+    for t in [&t, &grid] {
+        for _ in 0..100 {
+            let (x, y) = (rng.random_range(0.0..4.0), rng.random_range(0.0..4.0));
+            let h = 1e-7;
+            let gap = t.max_elevation_in(x, y, x + h, y + h) - t.elevation(x, y);
+            assert!((0.0..1e-5).contains(&gap), "gap {gap} at ({x}, {y})");
+        }
+    }
+}
+
+#[test]
+fn no_terrain_is_minus_infinity() {
+    assert_eq!(Terrain::None.elevation(1.0, 2.0), f64::NEG_INFINITY);
+    assert_eq!(Terrain::None.max_elevation_in(0.0, 0.0, 1.0, 1.0), f64::NEG_INFINITY);
+}
