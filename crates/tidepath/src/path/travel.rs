@@ -46,7 +46,7 @@ pub(crate) fn crab_ground_speed(d: Vec3, v: f64, c: Vec3) -> Option<f64> {
 }
 
 impl PathModel<'_> {
-    /// Fills `times` with the arrival time at each point (times[0] = departure) and returns the
+    /// Fills `times` with the arrival time at each point (`times[0]` = departure) and returns the
     /// number of segment pieces the vehicle cannot traverse against the current.
     pub fn arrival_times(&self, points: &[Vec3], times: &mut Vec<f64>) -> u32 {
         times.clear();
