@@ -78,7 +78,7 @@ proptest! {
     #[test]
     fn feasible_paths_never_enter_seabed_or_obstacles(
         hills in prop::collection::vec(hill(), 0..4),
-        obstacles in prop::collection::vec(obstacle(), 0..6),
+        obstacles in prop::collection::vec(obstacle(), 0..14),
         points in prop::collection::vec(waypoint(), 2..7),
         safety in 0.0..15.0f64,
     ) {

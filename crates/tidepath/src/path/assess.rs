@@ -76,11 +76,11 @@ impl PathModel<'_> {
                 out.collisions += 1;
             }
             let (ta, tb) = (times[i], times[i + 1]);
-            for o in &world.obstacles {
-                if o.segment_hits(a, b, ta, tb, safety) {
+            self.obstacles.for_each_candidate(a, b, |k| {
+                if world.obstacles[k].segment_hits(a, b, ta, tb, safety) {
                     out.collisions += 1;
                 }
-            }
+            });
             let h = dir.truncate();
             let h_len = h.length();
             if three_d && dir.z != 0.0 {

@@ -4,6 +4,7 @@
 
 mod assess;
 mod metrics;
+mod obstacle_index;
 mod travel;
 mod violations;
 
@@ -32,17 +33,20 @@ impl Default for ModelSettings {
 }
 
 /// A world, a vehicle and a departure time: everything needed to judge a path.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct PathModel<'a> {
     pub world: &'a World,
     pub vehicle: &'a Vehicle,
     pub departure_time: f64,
     pub settings: &'a ModelSettings,
+    /// Which obstacles each segment needs testing against; built once per model.
+    obstacles: obstacle_index::ObstacleIndex,
 }
 
 impl<'a> PathModel<'a> {
     pub fn new(world: &'a World, vehicle: &'a Vehicle, departure_time: f64, settings: &'a ModelSettings) -> Self {
-        Self { world, vehicle, departure_time, settings }
+        let obstacles = obstacle_index::ObstacleIndex::new(world, vehicle.safety_distance);
+        Self { world, vehicle, departure_time, settings, obstacles }
     }
 
     /// Total 3-D length of a polyline.
