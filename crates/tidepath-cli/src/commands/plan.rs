@@ -116,6 +116,9 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
         m.max_turn_deg, m.max_pitch_deg, m.collisions
     );
     println!("  evaluations    {} in {} iterations, wall time {:.3} s", r.evaluations, r.iterations, r.elapsed_s);
+    if r.stop_reason == tidepath::optim::StopReason::WallTime {
+        println!("  note           stopped by the wall-time limit: this result depends on the machine's speed");
+    }
     for v in r.violations.iter().take(8) {
         println!("  violation      {}", v.message);
     }

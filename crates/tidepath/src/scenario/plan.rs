@@ -49,13 +49,21 @@ impl Scenario {
         } else {
             (self.planner.iterations, self.planner.evaluations)
         };
-        let time = match req.time_limit_s.or(self.planner.time_limit_s) {
+        let (time, time_field) = match req.time_limit_s {
+            Some(t) => (Some(t), "--time-limit"),
+            None => (self.planner.time_limit_s, "planner.time_limit_s"),
+        };
+        let time = match time {
             None => None,
             Some(t) if t > 0.0 && t.is_finite() => Some(Duration::from_secs_f64(t)),
-            Some(t) => return Err(Error::input("planner.time_limit_s", format!("must be positive, got {t}"))),
+            Some(t) => return Err(Error::input(time_field, format!("must be positive and finite, got {t}"))),
         };
-        if iters == Some(0) || evals == Some(0) {
-            return Err(Error::input("iterations", "the budget must allow at least one iteration and evaluation"));
+        let source = if explicit { "--" } else { "planner." };
+        if iters == Some(0) {
+            return Err(Error::input(format!("{source}iterations"), "must be at least 1, got 0"));
+        }
+        if evals == Some(0) {
+            return Err(Error::input(format!("{source}evaluations"), "must be at least 1, got 0"));
         }
         Ok(Budget { max_iterations: iters, max_evaluations: evals, max_time: time })
     }
