@@ -8,7 +8,7 @@ use super::super::convergence::{build, draw_curves, ConvergenceSeries, Y_LABELS}
 use super::super::log_axis::DecadeAxis;
 use super::super::style::{self, plot_err, LegendEntry, Swatch};
 use super::cost_axis::{draw_zero_tick, CostAxis};
-use super::layout::{draw_header, draw_message, figure_size, header_height, panels, render_svg, NOTE_H, ZERO_NOTE};
+use super::layout::{draw_message, render_panel_grid, NOTE_H, ZERO_NOTE};
 use super::{color_index, planner_order, ProblemRuns};
 use crate::error::Result;
 use crate::experiments::stats::Summary;
@@ -128,20 +128,7 @@ pub fn render_convergence_figure(title: &str, problems: &[ProblemRuns]) -> Resul
     if panels_data.iter().any(|p| p.axis.and_then(|a| a.zero_at()).is_some()) {
         note.push_str(ZERO_NOTE);
     }
-    let (w, _, _) = figure_size(problems.len(), 0);
-    let header_h = header_height(title, &legend, &note, w);
-    let (w, h, panel) = figure_size(problems.len(), header_h);
-    render_svg((w, h), |root| {
-        draw_header(root, title, &legend, &note)?;
-        let areas = panels(root, problems.len(), header_h, panel);
-        if problems.is_empty() {
-            return draw_message(&areas[0], "no runs");
-        }
-        for (area, data) in areas.iter().zip(&panels_data) {
-            draw_convergence_panel(area, data)?;
-        }
-        Ok(())
-    })
+    render_panel_grid(title, &legend, &note, problems.len(), |area, i| draw_convergence_panel(area, &panels_data[i]))
 }
 
 fn draw_convergence_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, data: &ConvergencePanel) -> Result<()> {

@@ -151,3 +151,29 @@ pub(super) fn render_svg(
 pub(super) const ZERO_NOTE: &str = " On log axes, runs that reached exactly 0 are drawn on the line labelled 0.";
 /// Height of the strip above a plot for per-planner notes ("never feasible", "2 runs = ∞").
 pub(super) const NOTE_H: u32 = 18;
+
+/// A whole grid figure: title, legend and note on top, then one panel per problem drawn by
+/// `draw_panel(area, index)`, or a "no runs" message when there are no problems. Both grid
+/// figures (convergence and box plots) share this frame so their layouts always agree.
+pub(super) fn render_panel_grid(
+    title: &str,
+    legend: &[LegendEntry],
+    note: &str,
+    n: usize,
+    mut draw_panel: impl FnMut(&DrawingArea<SVGBackend, Shift>, usize) -> Result<()>,
+) -> Result<String> {
+    let (w, _, _) = figure_size(n, 0);
+    let header_h = header_height(title, legend, note, w);
+    let (w, h, panel) = figure_size(n, header_h);
+    render_svg((w, h), |root| {
+        draw_header(root, title, legend, note)?;
+        let areas = panels(root, n, header_h, panel);
+        if n == 0 {
+            return draw_message(&areas[0], "no runs");
+        }
+        for (i, area) in areas.iter().enumerate().take(n) {
+            draw_panel(area, i)?;
+        }
+        Ok(())
+    })
+}
