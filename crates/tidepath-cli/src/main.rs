@@ -1,6 +1,8 @@
 //! The `tidepath` command-line tool.
 //!
-//! Exit codes: 0 success, 1 no feasible plan found, 2 bad input or usage.
+//! Exit codes: 0 a plan that can be flown (status exact or feasible) or a command that
+//! succeeded, 1 any other plan status (infeasible, timeout, invalid-start, invalid-goal,
+//! unreachable), 2 bad input or usage.
 
 mod commands;
 mod progress;
@@ -26,8 +28,8 @@ enum Command {
     Scenarios,
     /// Print a built-in scenario's TOML, to copy and edit.
     Scenario(commands::scenarios::ShowArgs),
-    /// List planner ids with a one-line description and their paper.
-    Planners,
+    /// List planners, encodings, cost models and smoothers with their papers and parameters.
+    Planners(commands::planners::PlannersArgs),
     /// Plan a route on a scenario and print a summary.
     Plan(commands::plan::PlanArgs),
     /// Evaluate a plan JSON against a scenario: cost terms and feasibility.
@@ -40,10 +42,17 @@ enum Command {
     Reproduce(commands::reproduce::ReproduceArgs),
 }
 
+/// Most worker threads `--jobs` accepts: far more than any machine's cores, few enough that
+/// starting them cannot exhaust the process's thread limit.
+pub const MAX_JOBS: usize = 256;
+
 /// Worker threads for `--jobs`: the given count, or every core.
 pub fn jobs(requested: Option<usize>) -> Result<usize, tidepath::Error> {
     match requested {
         Some(0) => Err(tidepath::Error::input("--jobs", "must be at least 1, got 0")),
+        Some(j) if j > MAX_JOBS => {
+            Err(tidepath::Error::input("--jobs", format!("must be at most {MAX_JOBS}, got {j}")))
+        }
         Some(j) => Ok(j),
         None => Ok(std::thread::available_parallelism().map_or(1, |n| n.get())),
     }
@@ -53,6 +62,27 @@ pub fn jobs(requested: Option<usize>) -> Result<usize, tidepath::Error> {
 pub enum Outcome {
     Success,
     Infeasible,
+    /// A plan's status: 0 for exact or feasible, 1 otherwise.
+    Status(tidepath::planner::Status),
+}
+
+/// The stop flag Ctrl-C raises: a running plan stops at its next check and reports what it
+/// has (stop reason `cancelled`); a second Ctrl-C ends the process at once.
+pub fn stop_flag() -> std::sync::Arc<std::sync::atomic::AtomicBool> {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::{Arc, OnceLock};
+    static FLAG: OnceLock<Arc<AtomicBool>> = OnceLock::new();
+    FLAG.get_or_init(|| {
+        let flag = Arc::new(AtomicBool::new(false));
+        let f = flag.clone();
+        let _ = ctrlc::set_handler(move || {
+            if f.swap(true, Ordering::SeqCst) {
+                std::process::exit(130);
+            }
+        });
+        flag
+    })
+    .clone()
 }
 
 fn main() -> ExitCode {
@@ -60,7 +90,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Scenarios => commands::scenarios::list(),
         Command::Scenario(args) => commands::scenarios::show(&args),
-        Command::Planners => commands::planners::list(),
+        Command::Planners(args) => commands::planners::list(&args),
         Command::Plan(args) => commands::plan::run(&args),
         Command::Eval(args) => commands::eval::run(&args),
         Command::Compare(args) => commands::compare::run(&args),
@@ -70,6 +100,7 @@ fn main() -> ExitCode {
     match result {
         Ok(Outcome::Success) => ExitCode::SUCCESS,
         Ok(Outcome::Infeasible) => ExitCode::from(1),
+        Ok(Outcome::Status(s)) => ExitCode::from(s.exit_code() as u8),
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)

@@ -1,4 +1,5 @@
-//! End-to-end tests of the `tidepath` binary: the acceptance list of issue #2.
+//! End-to-end tests of the `tidepath` binary: plan, eval, listings, the bad-input contract and
+//! the status exit codes.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -41,23 +42,20 @@ fn demo_plan_is_feasible_and_writes_json_and_svg() {
     assert!(stdout.contains("feasible") && stdout.contains("cost") && stdout.contains("evaluations"), "{stdout}");
     let plan = json(&out);
     assert_eq!(plan["feasible"], true);
-    for key in [
-        "planner",
-        "seed",
-        "scenario",
-        "waypoints",
-        "cost",
-        "cost_terms",
-        "violations",
-        "metrics",
-        "evaluations",
-        "elapsed_s",
-        "history",
-    ] {
+    assert_eq!(plan["status"], "feasible");
+    assert_eq!(plan["version"], 2);
+    for key in
+        ["planner", "seed", "scenario", "status", "reason", "cost", "missions", "evaluations", "elapsed_s", "history"]
+    {
         assert!(plan.get(key).is_some(), "missing {key}");
     }
+    let m = &plan["missions"][0];
+    for key in ["name", "waypoints", "times", "cost", "cost_terms", "violations", "metrics"] {
+        assert!(m.get(key).is_some(), "missing missions[0].{key}");
+    }
+    assert_eq!(m["times"].as_array().unwrap().len(), m["waypoints"].as_array().unwrap().len());
     for key in ["length_m", "travel_time_s", "max_turn_deg", "max_pitch_deg", "min_clearance_m", "collisions"] {
-        assert!(plan["metrics"].get(key).is_some(), "missing metrics.{key}");
+        assert!(m["metrics"].get(key).is_some(), "missing metrics.{key}");
     }
     let svg_text = std::fs::read_to_string(&svg).unwrap();
     assert!(svg_text.starts_with("<svg") || svg_text.starts_with("<?xml"));
@@ -88,7 +86,8 @@ fn same_seed_gives_identical_json_apart_from_elapsed() {
     let b = strip(plan_demo(dir.path(), "b.json", "7", &[]));
     assert_eq!(a, b);
     let c = strip(plan_demo(dir.path(), "c.json", "8", &[]));
-    assert_ne!(a["waypoints"], c["waypoints"]);
+    assert!(a["missions"][0]["waypoints"].is_array());
+    assert_ne!(a["missions"][0]["waypoints"], c["missions"][0]["waypoints"]);
 }
 
 #[test]
@@ -96,7 +95,7 @@ fn thread_count_does_not_change_the_plan() {
     let dir = tempfile::tempdir().unwrap();
     let one = json(&plan_demo(dir.path(), "one.json", "5", &[("RAYON_NUM_THREADS", "1")]));
     let two = json(&plan_demo(dir.path(), "two.json", "5", &[("RAYON_NUM_THREADS", "2")]));
-    assert_eq!(one["waypoints"], two["waypoints"]);
+    assert_eq!(one["missions"], two["missions"]);
     assert_eq!(one["history"], two["history"]);
 }
 
@@ -130,16 +129,94 @@ fn unknown_planner_is_named() {
     assert_bad_input(&demo_text(), &["--planner", "warp-drive"], "planner", "warp-drive");
 }
 
+/// Runs `plan` on a scenario text that loads but cannot be planned: exit 1, the status and a
+/// one-line reason naming `field` and `what` on stdout, no panic.
+fn assert_status(scenario: &str, status: &str, field: &str, what: &str) {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("s.toml");
+    std::fs::write(&file, scenario).unwrap();
+    let out = dir.path().join("p.json");
+    let o = tidepath(&["plan", file.to_str().unwrap(), "--out", out.to_str().unwrap()], &[]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "stdout: {stdout} stderr: {}", String::from_utf8_lossy(&o.stderr));
+    let first = stdout.lines().next().unwrap_or_default();
+    assert!(first.contains(&format!(": {status}: {field}")) && first.contains(what), "{first}");
+    assert_eq!(json(&out)["status"], status);
+}
+
 #[test]
 fn start_inside_an_obstacle_is_named() {
     let text = demo_text().replace("start = [1000.0, 6000.0, -400.0]", "start = [9500.0, 6800.0, -450.0]");
-    assert_bad_input(&text, &[], "mission.start", "inside obstacle 0");
+    assert_status(&text, "invalid-start", "mission.start", "inside obstacle 0");
 }
 
 #[test]
 fn start_below_the_seabed_is_named() {
     let text = demo_text().replace("start = [1000.0, 6000.0, -400.0]", "start = [6000.0, 6000.0, -500.0]");
-    assert_bad_input(&text, &[], "mission.start", "below the seabed");
+    assert_status(&text, "invalid-start", "mission.start", "below the seabed");
+}
+
+#[test]
+fn time_limits_that_make_no_sense_are_input_errors() {
+    for bad in ["1e20", "-1", "nan", "inf", "0"] {
+        let flag = format!("--time-limit={bad}");
+        assert_bad_input(&demo_text(), &[flag.as_str()], "--time-limit", "must");
+    }
+}
+
+/// With no time limit anywhere the default cap applies, is printed, and stops a run that would
+/// otherwise go on for hours (the cap is lowered through its environment variable here).
+#[test]
+fn plan_without_a_limit_stops_at_the_default_cap_and_says_so() {
+    let o = tidepath(&["plan", "demo", "--iterations", "100000000"], &[("TIDEPATH_DEFAULT_TIME_LIMIT", "0.5")]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(matches!(o.status.code(), Some(0) | Some(1)), "{stdout}");
+    assert!(stdout.contains("time limit     0.5 s (default cap"), "{stdout}");
+    assert!(stdout.contains("stopped by the default wall-time cap"), "{stdout}");
+    let o = tidepath(&["plan", "demo", "--iterations", "3"], &[]);
+    assert!(String::from_utf8_lossy(&o.stdout).contains("time limit     600 s (default cap"));
+}
+
+/// A plan file written by version 1 (one path at the top level, before missions and statuses)
+/// still loads in `eval` and reproduces its recorded cost.
+#[test]
+fn version_one_plan_files_still_evaluate() {
+    let v1 = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/plan_v1_demo.json");
+    let o = tidepath(&["eval", "demo", v1], &[]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(matches!(o.status.code(), Some(0) | Some(1)), "{stdout} {}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains("plan format version 1"), "{stdout}");
+    assert!(stdout.contains("relative difference"), "{stdout}");
+}
+
+/// `plan --init` reads a plan (either version) and starts from it: the run can only end at a
+/// cost no worse than the file's path, since that path is in the first population.
+#[test]
+fn warm_start_from_a_plan_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let first = plan_demo(dir.path(), "first.json", "3", &[]);
+    let cost0 = json(&first)["cost"].as_f64().unwrap();
+    let out = dir.path().join("second.json");
+    let o = tidepath(
+        &[
+            "plan",
+            "demo",
+            "--planner",
+            "de",
+            "--iterations",
+            "5",
+            "--init",
+            first.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        &[],
+    );
+    assert!(matches!(o.status.code(), Some(0) | Some(1)), "{}", String::from_utf8_lossy(&o.stderr));
+    let cost1 = json(&out)["cost"].as_f64().unwrap();
+    assert!(cost1 <= cost0 * (1.0 + 1e-12), "warm start lost ground: {cost1} > {cost0}");
+    let o = tidepath(&["plan", "demo", "--init", "/nonexistent/plan.json"], &[]);
+    assert_eq!(o.status.code(), Some(2));
 }
 
 #[test]
@@ -172,8 +249,8 @@ fn listings_show_the_demo_and_the_planners() {
     let s = String::from_utf8(tidepath(&["scenarios"], &[]).stdout).unwrap();
     assert!(s.lines().any(|l| l.starts_with("demo")));
     let p = String::from_utf8(tidepath(&["planners"], &[]).stdout).unwrap();
-    for id in ["pso", "ga", "de"] {
-        assert!(p.lines().any(|l| l.starts_with(id)), "{id} missing from {p}");
+    for e in tidepath::planner::PLANNERS {
+        assert!(p.lines().any(|l| l.trim_start().starts_with(e.id)), "{} missing from {p}", e.id);
     }
     // The printed TOML loads back as a scenario file.
     let dir = tempfile::tempdir().unwrap();
@@ -190,9 +267,10 @@ fn smoothed_plans_are_evaluated_as_smoothed() {
     let o = tidepath(&["plan", "demo", "--smooth", "shortcut", "--seed", "2", "--out", out.to_str().unwrap()], &[]);
     assert!(matches!(o.status.code(), Some(0) | Some(1)), "{}", String::from_utf8_lossy(&o.stderr));
     let plan = json(&out);
-    let smoothed = plan["smoothed"].as_array().expect("smoothed path");
-    assert!(smoothed.len() <= plan["waypoints"].as_array().unwrap().len());
-    assert!(plan["cost"].as_f64().unwrap() <= plan["raw_cost"].as_f64().unwrap());
+    let m = &plan["missions"][0];
+    let smoothed = m["smoothed"].as_array().expect("smoothed path");
+    assert!(smoothed.len() <= m["waypoints"].as_array().unwrap().len());
+    assert!(m["cost"].as_f64().unwrap() <= m["raw_cost"].as_f64().unwrap());
     let o = tidepath(&["eval", "demo", out.to_str().unwrap()], &[]);
     assert!(String::from_utf8_lossy(&o.stdout).contains("relative difference 0.00e0"));
     let o = tidepath(&["plan", "demo", "--smooth", "spline-magic"], &[]);

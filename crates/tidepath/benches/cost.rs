@@ -40,7 +40,7 @@ fn world(current: Current) -> World {
         obstacles.push(Obstacle { shape, velocity });
     }
     let bounds = Aabb::new(Vec3::new(0.0, 0.0, -1000.0), Vec3::new(19900.0, 11940.0, 0.0));
-    World { bounds, dims: tidepath::world::Dims::Three, terrain, obstacles, current, waves: None }
+    World { bounds, dims: tidepath::world::Dims::Three, terrain, obstacles, current }
 }
 
 fn path() -> Vec<Vec3> {
@@ -63,9 +63,9 @@ fn bench(c: &mut Criterion) {
     for (name, current) in [("still water", Current::None), ("3 vortices", vortices)] {
         let w = world(current);
         let settings = ModelSettings { current_step: 250.0, ..ModelSettings::default() };
-        let model = PathModel::new(&w, &vehicle, 0.0, &settings);
-        let cost =
-            GeneralCost::new(GeneralWeights::default(), points[0], points[points.len() - 1], vehicle.speed).unwrap();
+        let mission = tidepath::mission::Mission::new("m", vehicle.clone(), points[0], points[points.len() - 1], 0.0);
+        let model = PathModel::new(&w, &mission, &settings);
+        let cost = GeneralCost::new(GeneralWeights::default()).unwrap();
         let mut scratch = Scratch::default();
         c.bench_function(&format!("cost of 40-waypoint path, 20 obstacles, 200x200 grid, {name}"), |b| {
             b.iter(|| cost.cost(&model, black_box(&points), &mut scratch))

@@ -10,7 +10,7 @@ use tidepath::experiments::runner::{execute, tasks, Task};
 use tidepath::experiments::RunRecord;
 use tidepath::optim::functions::{Function, FunctionObjective};
 use tidepath::optim::pso::{Pso, PsoParams};
-use tidepath::optim::{run, Budget};
+use tidepath::optim::{run, Termination};
 use tidepath::rng::run_rng;
 
 const RUNS: u64 = 10;
@@ -18,7 +18,8 @@ const RUNS: u64 = 10;
 fn one_run(seed: u64) -> f64 {
     let objective = FunctionObjective::new(Function::Rastrigin, 30, -5.12, 5.12);
     let mut pso = Pso::new(PsoParams::default());
-    run(&mut pso, &objective, &Budget::evaluations(12_000), run_rng(seed, 0), false, &mut |_| {}).best_cost
+    run(&mut pso, &objective, &Termination::evaluations(12_000), &mut run_rng(seed, 0), false, &[], &mut |_| {})
+        .best_cost
 }
 
 fn record(t: &Task, cost: f64) -> RunRecord {

@@ -3,6 +3,7 @@
 //! cargo run --release -p tidepath --example plan_demo
 
 use tidepath::planner::PLANNERS;
+
 use tidepath::scenario::{self, PlanRequest};
 
 fn main() -> Result<(), tidepath::Error> {
@@ -11,8 +12,13 @@ fn main() -> Result<(), tidepath::Error> {
         let request = PlanRequest { planner: Some(info.id.to_string()), seed: 7, parallel: true, ..Default::default() };
         let plan = scenario.plan(&request, &mut |_| {})?;
         println!(
-            "{:<4} cost {:.4}  feasible {:<5}  length {:>8.0} m  travel time {:>7.0} s  {} evaluations",
-            plan.planner, plan.cost, plan.feasible, plan.metrics.length_m, plan.metrics.travel_time_s, plan.evaluations
+            "{:<4} {:<10} cost {:.4}  length {:>8.0} m  travel time {:>7.0} s  {} evaluations",
+            plan.planner,
+            plan.status,
+            plan.cost_value(),
+            plan.length_m().unwrap_or(f64::NAN),
+            plan.travel_time_s().unwrap_or(f64::NAN),
+            plan.evaluations
         );
     }
     Ok(())

@@ -14,19 +14,24 @@
 //! * [`io`]: the plan JSON format;
 //! * [`plot`]: SVG figures.
 
+pub mod config;
 pub mod cost;
 pub mod encoding;
 pub mod error;
 pub mod experiments;
 pub mod geom;
 pub mod io;
+pub mod mission;
 pub mod optim;
 pub mod path;
 pub mod planner;
 pub mod plot;
+pub mod registry;
 pub mod rng;
 pub mod scenario;
 pub mod smoothing;
+pub mod termination;
+pub mod validity;
 pub mod vehicle;
 pub mod world;
 

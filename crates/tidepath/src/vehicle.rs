@@ -5,11 +5,6 @@
 pub struct Vehicle {
     /// Cruise speed through the water (m/s), used for travel time.
     pub speed: f64,
-    /// Through-water speed range (m/s); planners that choose speeds stay inside it.
-    pub speed_min: f64,
-    pub speed_max: f64,
-    /// Minimum turning radius (m), used by curvature-aware smoothing.
-    pub turn_radius: f64,
     /// Maximum change of horizontal heading at a waypoint (rad).
     pub max_turn: f64,
     /// Maximum climb or dive angle of a segment (rad).
@@ -38,9 +33,6 @@ impl Default for Vehicle {
     fn default() -> Self {
         Self {
             speed: 1.5,
-            speed_min: 0.5,
-            speed_max: 2.5,
-            turn_radius: 20.0,
             max_turn: 60f64.to_radians(),
             max_pitch: 30f64.to_radians(),
             depth_min: 0.0,

@@ -1,11 +1,15 @@
 //! The invariant users trust most: a path the model calls feasible never enters the seabed or
-//! an obstacle. Checked on random worlds and paths by dense sampling written independently of
-//! the model (own elevation formula, own containment tests, own clock).
+//! an obstacle. Checked on random worlds (moving obstacles, vortex currents) and paths by dense
+//! sampling written independently of the validity module (own elevation formula, own
+//! containment tests, own clock: the crab travel model integrated piece by piece as documented,
+//! sampled densely inside every piece at the time the vehicle is there).
 
 use proptest::prelude::*;
 use tidepath::geom::{Aabb, Vec2, Vec3};
+use tidepath::mission::Mission;
 use tidepath::path::{ModelSettings, PathModel};
 use tidepath::vehicle::Vehicle;
+use tidepath::world::current::LambOseen;
 use tidepath::world::terrain::{GaussianPeaks, Peak};
 use tidepath::world::{Current, Dims, Obstacle, Shape, Terrain, World};
 
@@ -68,6 +72,49 @@ fn obstacle() -> impl Strategy<Value = Obstacle> {
     (shape, velocity).prop_map(|(shape, velocity)| Obstacle { shape, velocity })
 }
 
+fn vortex() -> impl Strategy<Value = LambOseen> {
+    (0.0..SIZE, 0.0..SIZE, -3000.0..3000.0, 50.0..300.0).prop_map(|(x, y, strength, core_radius)| LambOseen {
+        x,
+        y,
+        strength,
+        core_radius,
+    })
+}
+
+/// The documented crab clock, written again: pieces of at most `step` metres, each flown at
+/// c.d + sqrt(v^2 - |c - (c.d) d|^2) for the current at its midpoint when the vehicle enters
+/// it. Returns (piece start, piece end, t start, t end) for every piece, or `None` when a piece
+/// cannot be flown (the model must then call the path infeasible).
+fn own_clock(world: &World, a: Vec3, b: Vec3, t0: f64, v: f64, step: f64) -> Option<Vec<(Vec3, Vec3, f64, f64)>> {
+    let len = a.distance(b);
+    if len == 0.0 {
+        return Some(vec![(a, b, t0, t0)]);
+    }
+    let d = (b - a) / len;
+    let n = match world.current {
+        Current::None | Current::Uniform(_) => 1,
+        _ => (len / step).ceil().max(1.0) as usize,
+    };
+    let piece = len / n as f64;
+    let mut out = Vec::with_capacity(n);
+    let mut t = t0;
+    for k in 0..n {
+        let p0 = a + d * (piece * k as f64);
+        let p1 = if k + 1 == n { b } else { a + d * (piece * (k + 1) as f64) };
+        let c = world.current.velocity(a + d * (piece * (k as f64 + 0.5)), t);
+        let along = c.dot(d);
+        let cross = c - d * along;
+        let disc = v * v - cross.dot(cross);
+        if disc < 0.0 || along + disc.sqrt() <= 0.0 {
+            return None;
+        }
+        let t1 = t + piece / (along + disc.sqrt());
+        out.push((p0, p1, t, t1));
+        t = t1;
+    }
+    Some(out)
+}
+
 fn waypoint() -> impl Strategy<Value = Vec3> {
     (0.0..SIZE, 0.0..SIZE, -500.0..0.0).prop_map(|(x, y, z)| Vec3::new(x, y, z))
 }
@@ -81,6 +128,7 @@ proptest! {
         obstacles in prop::collection::vec(obstacle(), 0..14),
         points in prop::collection::vec(waypoint(), 2..7),
         safety in 0.0..15.0f64,
+        vortices in prop::collection::vec(vortex(), 0..3),
     ) {
         let base = -500.0;
         let terrain = Terrain::Peaks(GaussianPeaks {
@@ -93,8 +141,7 @@ proptest! {
             dims: Dims::Three,
             terrain,
             obstacles: obstacles.clone(),
-            current: Current::None,
-            waves: None,
+            current: if vortices.is_empty() { Current::None } else { Current::Vortices(vortices) },
         };
         let vehicle = Vehicle {
             safety_distance: safety,
@@ -104,30 +151,136 @@ proptest! {
             depth_max: 500.0,
             ..Vehicle::default()
         };
-        let settings = ModelSettings::default();
-        let model = PathModel::new(&world, &vehicle, 0.0, &settings);
+        let settings = ModelSettings { current_step: 50.0, ..ModelSettings::default() };
+        let mission = Mission::new("m", vehicle.clone(), points[0], *points.last().unwrap(), 0.0);
+        let model = PathModel::new(&world, &mission, &settings);
         let violations = model.violations(&points);
         let mut times = Vec::new();
         let verdict = model.assess(&points, &mut times).feasible();
         prop_assert_eq!(verdict, violations.is_empty(), "assess and violations disagree: {:?}", violations);
         if verdict {
-            // Independent clock: still water, so ground speed is the cruise speed.
             let mut t0 = 0.0;
-            for w in points.windows(2) {
-                let len = w[0].distance(w[1]);
-                let t1 = t0 + len / vehicle.speed;
-                for k in 0..=2000 {
-                    let s = k as f64 / 2000.0;
-                    let p = w[0] + (w[1] - w[0]) * s;
-                    let t = t0 + (t1 - t0) * s;
-                    let ground = seabed(base, &hills, p.x, p.y);
-                    prop_assert!(p.z >= ground, "point {:?} is {} m below the seabed", p, ground - p.z);
-                    for (i, o) in obstacles.iter().enumerate() {
-                        prop_assert!(!inside(o, p, t), "point {:?} at t={} is inside obstacle {} {:?}", p, t, i, o);
+            for (i, w) in points.windows(2).enumerate() {
+                let pieces = own_clock(&world, w[0], w[1], t0, vehicle.speed, settings.current_step);
+                prop_assert!(pieces.is_some(), "segment {} cannot be flown against the current", i);
+                let pieces = pieces.unwrap();
+                let samples = (2000 / pieces.len()).max(20);
+                for &(p0, p1, ta, tb) in &pieces {
+                    for k in 0..=samples {
+                        let s = k as f64 / samples as f64;
+                        let p = p0 + (p1 - p0) * s;
+                        let t = ta + (tb - ta) * s;
+                        let ground = seabed(base, &hills, p.x, p.y);
+                        prop_assert!(p.z >= ground, "point {:?} is {} m below the seabed", p, ground - p.z);
+                        for (k, o) in obstacles.iter().enumerate() {
+                            prop_assert!(!inside(o, p, t), "point {:?} at t={} is inside obstacle {} {:?}", p, t, k, o);
+                        }
                     }
                 }
+                let t1 = pieces.last().unwrap().3;
+                prop_assert!((t1 - times[i + 1]).abs() <= 1e-9 * t1.abs().max(1.0), "clock differs: {} vs {}", t1, times[i + 1]);
                 t0 = t1;
             }
         }
     }
+}
+
+/// The same dense re-check over many random worlds built to give feasible paths often: fast
+/// moving obstacles (up to the vehicle's speed) and strong vortices, so the clock matters. The
+/// count of feasible paths is asserted, so the check can never pass by checking nothing.
+#[test]
+fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(2026);
+    let mut feasible = 0;
+    let mut moving_near = 0;
+    for case in 0..4000 {
+        let base = -500.0;
+        let hills: Vec<Hill> = (0..rng.random_range(0..3))
+            .map(|_| Hill {
+                x: rng.random_range(0.0..SIZE),
+                y: rng.random_range(0.0..SIZE),
+                h: rng.random_range(50.0..300.0),
+                s: rng.random_range(60.0..250.0),
+            })
+            .collect();
+        let obstacles: Vec<Obstacle> = (0..rng.random_range(0..6))
+            .map(|_| {
+                let c = Vec3::new(
+                    rng.random_range(0.0..SIZE),
+                    rng.random_range(0.0..SIZE),
+                    rng.random_range(-300.0..-100.0),
+                );
+                let v = Vec3::new(rng.random_range(-1.5..1.5), rng.random_range(-1.5..1.5), 0.0);
+                Obstacle { shape: Shape::Sphere { center: c, radius: rng.random_range(10.0..60.0) }, velocity: v }
+            })
+            .collect();
+        let vortices: Vec<LambOseen> = (0..rng.random_range(0..3))
+            .map(|_| LambOseen {
+                x: rng.random_range(0.0..SIZE),
+                y: rng.random_range(0.0..SIZE),
+                strength: rng.random_range(-1500.0..1500.0),
+                core_radius: rng.random_range(80.0..300.0),
+            })
+            .collect();
+        let world = World {
+            bounds: Aabb::new(Vec3::new(0.0, 0.0, -500.0), Vec3::new(SIZE, SIZE, 0.0)),
+            dims: Dims::Three,
+            terrain: Terrain::Peaks(GaussianPeaks {
+                base,
+                peaks: hills.iter().map(|h| Peak { x: h.x, y: h.y, height: h.h, sigma_x: h.s, sigma_y: h.s }).collect(),
+                ceiling: None,
+            }),
+            obstacles: obstacles.clone(),
+            current: if vortices.is_empty() { Current::None } else { Current::Vortices(vortices) },
+        };
+        let vehicle = Vehicle {
+            speed: 1.5,
+            safety_distance: rng.random_range(0.0..10.0),
+            max_turn: std::f64::consts::PI,
+            max_pitch: std::f64::consts::FRAC_PI_2,
+            depth_min: 0.0,
+            depth_max: 500.0,
+        };
+        let n = rng.random_range(2..5);
+        let points: Vec<Vec3> = (0..n)
+            .map(|_| {
+                Vec3::new(rng.random_range(0.0..SIZE), rng.random_range(0.0..SIZE), rng.random_range(-300.0..-100.0))
+            })
+            .collect();
+        let settings = ModelSettings { current_step: 40.0, ..ModelSettings::default() };
+        let mission = Mission::new("m", vehicle.clone(), points[0], points[n - 1], 0.0);
+        let model = PathModel::new(&world, &mission, &settings);
+        let mut times = Vec::new();
+        if !model.assess(&points, &mut times).feasible() {
+            continue;
+        }
+        feasible += 1;
+        let mut t0 = 0.0;
+        let mut closest = f64::INFINITY;
+        for (i, w) in points.windows(2).enumerate() {
+            let pieces = own_clock(&world, w[0], w[1], t0, vehicle.speed, settings.current_step)
+                .unwrap_or_else(|| panic!("case {case}: segment {i} judged flyable but the current blocks it"));
+            for &(p0, p1, ta, tb) in &pieces {
+                for k in 0..=40 {
+                    let s = k as f64 / 40.0;
+                    let (p, t) = (p0 + (p1 - p0) * s, ta + (tb - ta) * s);
+                    assert!(p.z >= seabed(base, &hills, p.x, p.y), "case {case}: {p:?} below the seabed");
+                    for (j, o) in obstacles.iter().enumerate() {
+                        assert!(!inside(o, p, t), "case {case}: {p:?} at t={t} inside obstacle {j}");
+                        if let Shape::Sphere { center, radius } = o.shape {
+                            closest = closest.min((p - (center + o.velocity * t)).length() - radius);
+                        }
+                    }
+                }
+            }
+            t0 = pieces.last().unwrap().3;
+            assert!((t0 - times[i + 1]).abs() <= 1e-9 * t0.max(1.0), "case {case}: clocks differ");
+        }
+        if closest < 100.0 {
+            moving_near += 1;
+        }
+    }
+    assert!(feasible >= 1000, "only {feasible} feasible paths: the check would be too thin");
+    assert!(moving_near >= 100, "only {moving_near} feasible paths passed near a moving obstacle");
 }

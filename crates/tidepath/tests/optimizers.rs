@@ -6,7 +6,7 @@ use tidepath::optim::de::{De, DeParams};
 use tidepath::optim::functions::{Function, FunctionObjective};
 use tidepath::optim::ga::{Ga, GaParams};
 use tidepath::optim::pso::{Pso, PsoParams};
-use tidepath::optim::{run, Budget, Objective, Optimizer, RunResult, Scratch, StopReason};
+use tidepath::optim::{run, Objective, Optimizer, RunResult, Scratch, StopReason, Termination as Budget};
 use tidepath::rng::run_rng;
 
 type MakeOptimizer = fn() -> Box<dyn Optimizer>;
@@ -32,7 +32,7 @@ fn sphere10() -> FunctionObjective {
 
 fn run_with(make: MakeOptimizer, objective: &dyn Objective, budget: &Budget, seed: u64) -> RunResult {
     let mut opt = make();
-    run(opt.as_mut(), objective, budget, run_rng(seed, 0), true, &mut |_| {})
+    run(opt.as_mut(), objective, budget, &mut run_rng(seed, 0), true, &[], &mut |_| {})
 }
 
 fn assert_bitwise_equal(name: &str, what: &str, a: &RunResult, b: &RunResult) {

@@ -68,29 +68,47 @@ fn grid_fields() {
 
 #[test]
 fn vehicle_values() {
-    rejects(&with("speed = 1.5", "speed = 3.0"), "vehicle.speed", "3");
+    rejects(&with("speed = 1.5", "speed = 300.0"), "vehicle.speed", "300");
     rejects(&with("speed = 1.5", "speed = -1.0"), "vehicle.speed", "-1");
     rejects(&with("max_turn_deg = 60.0", "max_turn_deg = 270.0"), "vehicle.max_turn_deg", "270");
     rejects(&with("max_pitch_deg = 30.0", "max_pitch_deg = 0.0"), "vehicle.max_pitch_deg", "0");
     rejects(&with("depth_min = 5.0", "depth_min = 2000.0"), "vehicle.depth_min", "2000");
     rejects(&with("safety_distance = 25.0", "safety_distance = -5.0"), "vehicle.safety_distance", "-5");
-    rejects(&with("turn_radius = 50.0", "turn_radius = \"wide\""), "vehicle.turn_radius", "wide");
+    rejects(&with("max_pitch_deg = 30.0", "max_pitch_deg = 95.0"), "vehicle.max_pitch_deg", "95");
+    rejects(&with("max_turn_deg = 60.0", "max_turn_deg = \"wide\""), "vehicle.max_turn_deg", "wide");
 }
 
 #[test]
 fn mission_values() {
-    rejects(&with("start = [1000.0, 6000.0, -400.0]", "start = [1000.0, 6000.0, -2.0]"), "mission.start", "depth band");
     rejects(&with("goal = [19000.0, 6500.0, -300.0]", "goal = [19000.0, 6500.0]"), "mission.goal", "3");
     rejects(
-        &with("start = [1000.0, 6000.0, -400.0]", "start = [3600.0, 8000.0, -500.0]"),
+        &with("start = [1000.0, 6000.0, -400.0]", "start = [-1000.0, 6000.0, -400.0]"),
         "mission.start",
-        "obstacle 3",
+        "outside the domain",
     );
-    rejects(
-        &with("start = [1000.0, 6000.0, -400.0]", "start = [9500.0, 6080.0, -450.0]"),
-        "mission.start",
-        "obstacle 0",
-    );
+    rejects(&with("departure_time = 0.0", "departure_time = 1e20"), "mission.departure_time", "1e20");
+}
+
+/// A start or goal in the seabed, an obstacle or outside the depth band is the plan's status,
+/// decided before planning, with one line naming the field.
+#[test]
+fn invalid_start_and_goal_are_statuses() {
+    use tidepath::planner::Status;
+    use tidepath::scenario::PlanRequest;
+    let cases = [
+        ("start = [1000.0, 6000.0, -400.0]", "start = [1000.0, 6000.0, -2.0]", Status::InvalidStart, "depth band"),
+        ("start = [1000.0, 6000.0, -400.0]", "start = [3600.0, 8000.0, -500.0]", Status::InvalidStart, "obstacle 3"),
+        ("start = [1000.0, 6000.0, -400.0]", "start = [9500.0, 6080.0, -450.0]", Status::InvalidStart, "obstacle 0"),
+        ("goal = [19000.0, 6500.0, -300.0]", "goal = [19000.0, 6500.0, -990.0]", Status::InvalidGoal, "seabed"),
+    ];
+    for (old, new, status, what) in cases {
+        let s = Scenario::from_toml(&with(old, new), "t.toml").unwrap();
+        let r = s.plan(&PlanRequest { iterations: Some(2), ..PlanRequest::default() }, &mut |_| {}).unwrap();
+        assert_eq!(r.status, status, "{new}: {}", r.reason);
+        let field = if status == Status::InvalidStart { "mission.start" } else { "mission.goal" };
+        assert!(r.reason.starts_with(field) && r.reason.contains(what), "{}", r.reason);
+        assert_eq!(r.evaluations, 0, "nothing is planned");
+    }
 }
 
 #[test]

@@ -11,43 +11,59 @@ use crate::Outcome;
 pub struct EvalArgs {
     /// A built-in scenario name or a scenario TOML file.
     pub scenario: String,
-    /// A plan JSON (as written by `tidepath plan --out`); only `waypoints` is required.
+    /// A plan JSON (as written by `tidepath plan --out`, any format version); a hand-written
+    /// file needs only `waypoints` (one mission) or `missions[].waypoints`.
     pub plan: PathBuf,
 }
 
 pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
     let plan = PlanFile::read(&args.plan)?;
-    let points = plan.points();
-    let eval = scenario.evaluate(&points)?;
+    let judged = scenario.evaluate_paths(&plan.mission_paths())?;
 
-    println!("{} — {} ({} waypoints)", scenario.name, args.plan.display(), points.len());
-    if points.first() != Some(&scenario.start) || points.last() != Some(&scenario.goal) {
-        println!("  note: the path does not start and end at this scenario's start and goal");
+    println!("{} — {} (plan format version {})", scenario.name, args.plan.display(), plan.version);
+    let mut total = 0.0;
+    let several = judged.len() > 1;
+    for m in &judged {
+        total += m.cost;
+        let indent = if several { "    " } else { "  " };
+        if several {
+            println!("  mission {} ({} waypoints):", m.name, m.waypoints.len());
+        } else {
+            println!("  {} waypoints", m.waypoints.len());
+        }
+        println!("{indent}cost terms ({} model):", scenario.cost.model);
+        for (name, value) in &m.terms {
+            println!("{indent}  {name:<12} {value:>14.9}");
+        }
+        println!("{indent}  {:<12} {:>14.9}", "total", m.cost);
+        if let Some(x) = &m.metrics {
+            let clearance = x.min_clearance_m.map_or("n/a".to_string(), |c| format!("{c:.1} m"));
+            println!(
+                "{indent}length {:.1} m; travel time {:.1} s (arrives at t = {:.1} s); max turn {:.1} deg; max pitch {:.1} deg; min clearance {clearance}",
+                x.length_m,
+                x.travel_time_s,
+                m.times.last().copied().unwrap_or(f64::NAN),
+                x.max_turn_deg,
+                x.max_pitch_deg
+            );
+        }
+        if m.feasible {
+            println!("{indent}verdict: feasible");
+        } else {
+            println!("{indent}verdict: NOT feasible, {} violation(s):", m.violations.len());
+            for v in &m.violations {
+                println!("{indent}  - {}", v.message);
+            }
+        }
     }
-    println!("  cost terms ({} model):", scenario.cost.model);
-    for (name, value) in &eval.terms {
-        println!("    {name:<12} {value:>14.9}");
+    if several {
+        println!("  total cost {total:.9}");
     }
-    println!("    {:<12} {:>14.9}", "total", eval.cost);
     if let Some(recorded) = plan.cost {
-        let rel = (eval.cost - recorded).abs() / recorded.abs().max(f64::MIN_POSITIVE);
+        let rel = (total - recorded).abs() / recorded.abs().max(f64::MIN_POSITIVE);
         println!("  recorded cost {recorded:.9}; relative difference {rel:.2e}");
     }
-    let m = &eval.metrics;
-    let clearance = m.min_clearance_m.map_or("n/a".to_string(), |c| format!("{c:.1} m"));
-    println!(
-        "  length {:.1} m; travel time {:.1} s; max turn {:.1} deg; max pitch {:.1} deg; min clearance {clearance}",
-        m.length_m, m.travel_time_s, m.max_turn_deg, m.max_pitch_deg
-    );
-    if eval.feasible {
-        println!("  verdict: feasible");
-        Ok(Outcome::Success)
-    } else {
-        println!("  verdict: NOT feasible, {} violation(s):", eval.violations.len());
-        for v in &eval.violations {
-            println!("    - {}", v.message);
-        }
-        Ok(Outcome::Infeasible)
-    }
+    let feasible = judged.iter().all(|m| m.feasible);
+    Ok(if feasible { Outcome::Success } else { Outcome::Infeasible })
 }

@@ -1,7 +1,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use tidepath::io::{write_atomic, PlanReport};
+use tidepath::io::{write_atomic, PlanFile, PlanReport};
 use tidepath::plot::{write_plan_figure, PlanFigure, PlotPath};
 use tidepath::scenario::{self, PlanRequest, Scenario};
 use tidepath::Error;
@@ -18,12 +18,18 @@ pub struct PlanArgs {
     pub planner: Option<String>,
     #[command(flatten)]
     pub run: super::budget::BudgetArgs,
-    /// Wall-time safety net in seconds; a run stopped by it depends on the machine.
+    /// Wall-time limit in seconds. Without it (and without the scenario's
+    /// `planner.time_limit_s`) a default cap of 600 s applies; a run stopped by time depends on
+    /// the machine.
     #[arg(long)]
     pub time_limit: Option<f64>,
     /// Smooth the plan (`shortcut`, or `none` to override the scenario's smoother).
     #[arg(long)]
     pub smooth: Option<String>,
+    /// Start from this plan JSON (a warm start): optimizers seed part of their population with
+    /// its paths.
+    #[arg(long)]
+    pub init: Option<PathBuf>,
     /// Write the plan as JSON here.
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -34,6 +40,9 @@ pub struct PlanArgs {
 
 pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
+    for w in &scenario.warnings {
+        eprintln!("warning: {w}");
+    }
     if args.run.jobs.is_some() {
         // Only the first pool configuration counts; a fresh process has none yet.
         let _ = rayon::ThreadPoolBuilder::new().num_threads(crate::jobs(args.run.jobs)?).build_global();
@@ -45,6 +54,10 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
             }
         }
     }
+    let init = match &args.init {
+        Some(path) => Some(PlanFile::read(path)?.mission_paths()),
+        None => None,
+    };
     let req = PlanRequest {
         planner: args.planner.clone(),
         seed: args.run.seed,
@@ -55,6 +68,8 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         time_limit_s: args.time_limit,
         parallel: true,
         smoother: args.smooth.clone(),
+        init,
+        stop: Some(crate::stop_flag()),
     };
     let label = req.planner.clone().unwrap_or_else(|| scenario.planner.id.clone());
     let mut bar = DelayedBar::new(&label);
@@ -69,61 +84,99 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         write_figure(&scenario, &report, plot)?;
     }
     print_summary(&scenario, &report);
-    Ok(if report.feasible { Outcome::Success } else { Outcome::Infeasible })
+    Ok(Outcome::Status(report.status))
 }
 
 fn write_figure(scenario: &Scenario, report: &PlanReport, out: &std::path::Path) -> Result<(), Error> {
-    let raw: Vec<_> = report.waypoints.iter().map(|p| tidepath::Vec3::from_array(*p)).collect();
-    let smoothed = report.smoothed.is_some().then(|| report.points());
     let history: Vec<f64> = report.history.iter().map(|h| h.unwrap_or(f64::NAN)).collect();
-    let verdict = if report.feasible { "feasible" } else { "INFEASIBLE" };
+    let cost = report.cost.map_or("none".to_string(), |c| format!("{c:.4}"));
+    let to_points = |p: &[[f64; 3]]| p.iter().map(|q| tidepath::Vec3::from_array(*q)).collect::<Vec<_>>();
+    let several = report.missions.len() > 1;
+    let mut owned: Vec<(String, Vec<tidepath::Vec3>)> = Vec::new();
+    for m in &report.missions {
+        let name = if several { format!("{} {}", report.planner, m.name) } else { report.planner.clone() };
+        match &m.smoothed {
+            None => owned.push((name, to_points(&m.waypoints))),
+            Some(s) => {
+                owned.push((format!("{name} (smoothed)"), to_points(s)));
+                owned.push((format!("{name} (raw)"), to_points(&m.waypoints)));
+            }
+        }
+    }
     let fig = PlanFigure {
-        title: format!(
-            "{} — {}, seed {}: cost {:.4}, {verdict}",
-            scenario.name, report.planner, report.seed, report.cost
-        ),
+        title: format!("{} — {}, seed {}: cost {cost}, {}", scenario.name, report.planner, report.seed, report.status),
         world: &scenario.world,
         start: scenario.start,
         goal: scenario.goal,
         time: scenario.departure_time,
-        paths: match &smoothed {
-            None => vec![PlotPath { label: report.planner.clone(), points: &raw }],
-            Some(s) => vec![
-                PlotPath { label: format!("{} (smoothed)", report.planner), points: s },
-                PlotPath { label: format!("{} (raw)", report.planner), points: &raw },
-            ],
-        },
+        paths: owned.iter().map(|(label, pts)| PlotPath { label: label.clone(), points: pts }).collect(),
         histories: vec![(report.planner.clone(), &history)],
     };
     write_plan_figure(&fig, out)
 }
 
 pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
-    let verdict = if r.feasible { "feasible" } else { "NOT feasible" };
-    println!("{} — {} (seed {}): {verdict}", scenario.name, r.planner, r.seed);
-    let terms: Vec<String> =
-        r.cost_terms.iter().map(|(k, v)| format!("{k} {:.4}", v.as_f64().unwrap_or(f64::NAN))).collect();
-    println!("  cost           {:.6}  ({})", r.cost, terms.join(", "));
-    if let (Some(raw), Some(s)) = (r.raw_cost, &r.smoothed) {
-        println!("  smoothed       {} -> {} waypoints; cost before smoothing {raw:.6}", r.waypoints.len(), s.len());
+    println!("{} — {} (seed {}): {}: {}", scenario.name, r.planner, r.seed, r.status, r.reason);
+    let several = r.missions.len() > 1;
+    for m in &r.missions {
+        let indent = if several {
+            println!("  mission {}: {}", m.name, if m.feasible { "feasible" } else { "NOT feasible" });
+            "    "
+        } else {
+            "  "
+        };
+        if m.waypoints.is_empty() {
+            println!("{indent}no path");
+            continue;
+        }
+        let terms: Vec<String> =
+            m.cost_terms.iter().map(|(k, v)| format!("{k} {:.4}", v.as_f64().unwrap_or(f64::NAN))).collect();
+        let cost = m.cost.map_or("none".to_string(), |c| format!("{c:.6}"));
+        println!("{indent}cost           {cost}  ({})", terms.join(", "));
+        if let (Some(raw), Some(s)) = (m.raw_cost, &m.smoothed) {
+            println!(
+                "{indent}smoothed       {} -> {} waypoints; cost before smoothing {raw:.6}",
+                m.waypoints.len(),
+                s.len()
+            );
+        }
+        if let Some(x) = &m.metrics {
+            println!("{indent}length         {:.1} m", x.length_m);
+            println!(
+                "{indent}travel time    {:.1} s ({}, {} model); arrives at t = {:.1} s",
+                x.travel_time_s,
+                hms(x.travel_time_s),
+                r.travel_time_model,
+                m.times.last().copied().unwrap_or(f64::NAN)
+            );
+            let clearance = x.min_clearance_m.map_or("n/a".to_string(), |c| format!("{c:.1} m"));
+            println!(
+                "{indent}min clearance  {clearance}; max turn {:.1} deg; max pitch {:.1} deg; collisions {}",
+                x.max_turn_deg, x.max_pitch_deg, x.collisions
+            );
+        }
+        for v in m.violations.iter().take(8) {
+            println!("{indent}violation      {}", v.message);
+        }
+        if m.violations.len() > 8 {
+            println!("{indent}... and {} more violations", m.violations.len() - 8);
+        }
     }
-    let m = &r.metrics;
-    println!("  length         {:.1} m", m.length_m);
-    println!("  travel time    {:.1} s ({}, {} model)", m.travel_time_s, hms(m.travel_time_s), r.travel_time_model);
-    let clearance = m.min_clearance_m.map_or("n/a".to_string(), |c| format!("{c:.1} m"));
-    println!(
-        "  min clearance  {clearance}; max turn {:.1} deg; max pitch {:.1} deg; collisions {}",
-        m.max_turn_deg, m.max_pitch_deg, m.collisions
-    );
-    println!("  evaluations    {} in {} iterations, wall time {:.3} s", r.evaluations, r.iterations, r.elapsed_s);
-    if r.stop_reason == tidepath::optim::StopReason::WallTime {
-        println!("  note           stopped by the wall-time limit: this result depends on the machine's speed");
+    let mut work = format!("{} evaluations in {} iterations", r.evaluations, r.iterations);
+    if r.expansions > 0 {
+        work.push_str(&format!(", {} expansions", r.expansions));
     }
-    for v in r.violations.iter().take(8) {
-        println!("  violation      {}", v.message);
+    if r.samples > 0 {
+        work.push_str(&format!(", {} samples", r.samples));
     }
-    if r.violations.len() > 8 {
-        println!("  ... and {} more violations", r.violations.len() - 8);
+    println!("  search         {work}, wall time {:.3} s, stopped by {}", r.elapsed_s, r.stop_reason.id());
+    if let Some(limit) = r.time_limit_s {
+        let source = if r.default_time_cap { " (default cap; change with --time-limit)" } else { "" };
+        println!("  time limit     {limit} s{source}");
+    }
+    if r.stop_reason == tidepath::termination::StopReason::WallTime {
+        let what = if r.default_time_cap { "the default wall-time cap" } else { "the wall-time limit" };
+        println!("  note           stopped by {what}: this result depends on the machine's speed");
     }
 }
 

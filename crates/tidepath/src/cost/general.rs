@@ -18,6 +18,7 @@ use crate::error::{Error, Result};
 use crate::geom::Vec3;
 use crate::optim::Scratch;
 use crate::path::PathModel;
+use crate::registry::Param;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -55,19 +56,31 @@ impl GeneralWeights {
     }
 }
 
+/// The weights' ranges, for `tidepath planners` and the registry.
+pub const PARAMS: &[Param] = &[
+    Param { name: "length", range: "finite, >= 0", help: "weight of length / straight start-goal distance" },
+    Param { name: "time", range: "finite, >= 0", help: "weight of travel time / still-water straight time" },
+    Param { name: "collision", range: "finite, >= 0", help: "per collision, bounds, endpoint or current violation" },
+    Param { name: "turn", range: "finite, >= 0", help: "per turn violation plus its excess (rad)" },
+    Param { name: "pitch", range: "finite, >= 0", help: "per pitch violation plus its excess (rad)" },
+];
+
 #[derive(Clone, Debug)]
 pub struct GeneralCost {
     pub weights: GeneralWeights,
-    /// Straight start-goal distance (m) and the time to cover it in still water (s).
-    pub ref_length: f64,
-    pub ref_time: f64,
 }
 
 impl GeneralCost {
-    pub fn new(weights: GeneralWeights, start: Vec3, goal: Vec3, speed: f64) -> Result<Self> {
+    pub fn new(weights: GeneralWeights) -> Result<Self> {
         weights.check()?;
-        let ref_length = start.distance(goal).max(1e-9);
-        Ok(Self { weights, ref_length, ref_time: ref_length / speed })
+        Ok(Self { weights })
+    }
+
+    /// Straight start-goal distance L0 (m) and the time to cover it in still water T0 (s) for
+    /// the mission of `model`: the normalisation of the length and time terms.
+    pub fn references(model: &PathModel<'_>) -> (f64, f64) {
+        let l0 = model.start.distance(model.goal).max(1e-9);
+        (l0, l0 / model.vehicle.speed)
     }
 }
 
@@ -85,11 +98,26 @@ impl CostModel for GeneralCost {
     fn evaluate(&self, model: &PathModel<'_>, points: &[Vec3], scratch: &mut Scratch, terms: &mut [f64]) -> f64 {
         let a = model.assess(points, &mut scratch.times);
         let w = &self.weights;
-        terms[0] = w.length * a.length / self.ref_length;
-        terms[1] = w.time * a.travel_time / self.ref_time;
-        terms[2] = w.collision * (a.collisions + a.bounds_violations + a.current_blocked) as f64;
+        let (l0, t0) = Self::references(model);
+        terms[0] = w.length * a.length / l0;
+        terms[1] = w.time * a.travel_time / t0;
+        terms[2] =
+            w.collision * (a.collisions + a.bounds_violations + a.endpoint_violations + a.current_blocked) as f64;
         terms[3] = w.turn * (a.turn_violations as f64 + a.turn_excess);
         terms[4] = w.pitch * (a.pitch_violations as f64 + a.pitch_excess);
         terms[..5].iter().sum()
+    }
+
+    /// Length and time are additive: a valid motion costs w_length l / L0 + w_time dt / T0.
+    /// The turn and pitch penalties are path-level (they depend on joints); planners that build
+    /// paths edge by edge check them on the finished path, where the evaluation counts them.
+    fn motion_cost(&self, model: &PathModel<'_>, a: Vec3, b: Vec3, t0: f64) -> Option<(f64, f64)> {
+        let m = model.validator.motion(a, b, t0);
+        if !m.valid() {
+            return None;
+        }
+        let (l0, tt0) = Self::references(model);
+        let w = &self.weights;
+        Some((w.length * a.distance(b) / l0 + w.time * (m.arrival - t0) / tt0, m.arrival))
     }
 }

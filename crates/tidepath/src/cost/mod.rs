@@ -5,9 +5,30 @@ pub mod general;
 
 pub use general::{GeneralCost, GeneralWeights};
 
+use crate::error::Result;
 use crate::geom::Vec3;
 use crate::optim::Scratch;
 use crate::path::PathModel;
+use crate::registry::{defaults_of, Entry, Registry};
+
+pub type BuildCost = fn(&toml::Table) -> Result<Box<dyn CostModel>>;
+
+/// The cost models, selected by `[cost] model`; parameters are `[cost.weights]`.
+pub const COST_MODELS: &[Entry<BuildCost>] = &[Entry {
+    id: "general",
+    description: "normalised length and time plus violation counts and excesses (users' own missions)",
+    citation: "tidepath",
+    params: general::PARAMS,
+    defaults: defaults_of::<GeneralWeights>,
+    build: |t| {
+        let w: GeneralWeights = crate::config::from_value(toml::Value::Table(t.clone()), "cost.weights")?;
+        Ok(Box::new(GeneralCost::new(w)?))
+    },
+}];
+
+pub fn registry() -> Registry<BuildCost> {
+    Registry::new("cost model", "cost.model", "tidepath planners", COST_MODELS)
+}
 
 /// The most terms any model may have; term buffers live on the stack.
 pub const MAX_TERMS: usize = 8;
@@ -19,8 +40,15 @@ pub trait CostModel: Send + Sync {
     /// Names of the terms, in the order `evaluate` writes them.
     fn term_names(&self) -> &'static [&'static str];
     /// Writes each weighted term into `terms[..term_names().len()]` and returns their sum.
-    /// Must not allocate once `scratch` has grown to the path's size.
+    /// Must not allocate once `scratch` has grown to the path's size. `model` carries the
+    /// mission (start, goal, vehicle, departure), so one model serves every mission.
     fn evaluate(&self, model: &PathModel<'_>, points: &[Vec3], scratch: &mut Scratch, terms: &mut [f64]) -> f64;
+
+    /// The cost of one motion a -> b leaving at `t0` for the model's additive terms, so graph
+    /// and sampling planners that build paths edge by edge accumulate what the evaluation
+    /// reports; `None` when the motion is invalid. Path-level terms (turn and pitch penalties
+    /// at joints, normalisation constants) are the model's to document.
+    fn motion_cost(&self, model: &PathModel<'_>, a: Vec3, b: Vec3, t0: f64) -> Option<(f64, f64)>;
 
     /// The total only.
     fn cost(&self, model: &PathModel<'_>, points: &[Vec3], scratch: &mut Scratch) -> f64 {

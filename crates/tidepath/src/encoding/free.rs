@@ -77,6 +77,23 @@ impl Encoding for FreeWaypoints {
         }
         out.push(self.goal);
     }
+
+    /// Interior waypoints equally spaced in arc length along `path`.
+    fn encode(&self, path: &[Vec3]) -> Vec<f64> {
+        let mut x = Vec::with_capacity(self.lower.len());
+        for i in 1..=self.n {
+            let p = super::point_at_fraction(path, i as f64 / (self.n + 1) as f64);
+            let u = (p - self.min) / self.size.max(Vec3::splat(f64::MIN_POSITIVE));
+            x.extend_from_slice(&[u.x, u.y]);
+            if self.three_d {
+                x.push(u.z);
+            }
+        }
+        for v in &mut x {
+            *v = if v.is_finite() { v.clamp(0.0, 1.0) } else { 0.5 };
+        }
+        x
+    }
 }
 
 #[cfg(test)]

@@ -7,7 +7,75 @@ pub mod sliced;
 pub use free::FreeWaypoints;
 pub use sliced::Sliced;
 
-use crate::geom::Vec3;
+use crate::error::Result;
+use crate::geom::{Aabb, Vec3};
+use crate::registry::{Entry, Param, Registry};
+
+/// What an encoding is built from: one mission's endpoints, the domain and the height band.
+#[derive(Clone, Copy, Debug)]
+pub struct EncodingArgs<'a> {
+    pub start: Vec3,
+    pub goal: Vec3,
+    /// Interior waypoints (start and goal come on top).
+    pub waypoints: usize,
+    pub bounds: &'a Aabb,
+    /// The height band a 3-D encoding may use, or `None` in a 2-D world.
+    pub z_range: Option<(f64, f64)>,
+}
+
+/// The `[encoding]` section: which encoding optimization planners search over.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct EncodingSpec {
+    /// "sliced" or "free".
+    pub kind: String,
+    /// Interior waypoints (start and goal come on top).
+    pub waypoints: usize,
+}
+
+impl Default for EncodingSpec {
+    fn default() -> Self {
+        Self { kind: "sliced".into(), waypoints: 20 }
+    }
+}
+
+pub type BuildEncoding = fn(&EncodingArgs<'_>) -> Result<Box<dyn Encoding>>;
+
+const WAYPOINTS: Param = Param {
+    name: "waypoints",
+    range: "integer in [1, 10000]",
+    help: "interior waypoints (start and goal come on top)",
+};
+
+fn waypoint_defaults() -> toml::Table {
+    let mut t = toml::Table::new();
+    t.insert("waypoints".into(), toml::Value::Integer(20));
+    t
+}
+
+/// The encodings, selected by `[encoding] kind`.
+pub const ENCODINGS: &[Entry<BuildEncoding>] = &[
+    Entry {
+        id: "sliced",
+        description: "one waypoint on each of n planes across the start-goal axis (cannot turn back along it)",
+        citation: "wpa2017 section 3.1, lfhh2019 eqs. 12-13, ijs2023 section 3.1 (generalised to any axis)",
+        params: &[WAYPOINTS],
+        defaults: waypoint_defaults,
+        build: |a| Ok(Box::new(Sliced::new(a.start, a.goal, a.waypoints, a.bounds, a.z_range)?)),
+    },
+    Entry {
+        id: "free",
+        description: "n waypoints anywhere in the domain, visited in order",
+        citation: "amfa2015 section 4",
+        params: &[WAYPOINTS],
+        defaults: waypoint_defaults,
+        build: |a| Ok(Box::new(FreeWaypoints::new(a.start, a.goal, a.waypoints, a.bounds, a.z_range)?)),
+    },
+];
+
+pub fn registry() -> Registry<BuildEncoding> {
+    Registry::new("encoding", "encoding.kind", "tidepath planners", ENCODINGS)
+}
 
 pub trait Encoding: Send + Sync {
     /// The name used in scenario files.
@@ -17,6 +85,9 @@ pub trait Encoding: Send + Sync {
     fn upper(&self) -> &[f64];
     /// Writes the path for `x` into `out` (cleared first): start, waypoints, goal.
     fn decode_into(&self, x: &[f64], out: &mut Vec<Vec3>);
+    /// The decision vector whose path best follows `path` (start and goal included), clamped
+    /// to the bounds: how a warm start enters an optimizer's population.
+    fn encode(&self, path: &[Vec3]) -> Vec<f64>;
     /// Brings `x` back inside the encoding's feasible set. The default clamps to the bounds.
     fn repair(&self, x: &mut [f64]) {
         for ((v, lo), hi) in x.iter_mut().zip(self.lower()).zip(self.upper()) {
@@ -29,4 +100,18 @@ pub trait Encoding: Send + Sync {
         self.decode_into(x, &mut out);
         out
     }
+}
+
+/// The point at arc-length fraction `f` in [0, 1] along a polyline.
+pub fn point_at_fraction(path: &[Vec3], f: f64) -> Vec3 {
+    let total: f64 = path.windows(2).map(|w| w[0].distance(w[1])).sum();
+    let mut left = f.clamp(0.0, 1.0) * total;
+    for w in path.windows(2) {
+        let l = w[0].distance(w[1]);
+        if left <= l && l > 0.0 {
+            return w[0] + (w[1] - w[0]) * (left / l);
+        }
+        left -= l;
+    }
+    path.last().copied().unwrap_or(Vec3::ZERO)
 }

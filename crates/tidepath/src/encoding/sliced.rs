@@ -130,6 +130,32 @@ impl Encoding for Sliced {
         }
         out.push(self.goal);
     }
+
+    /// Each plane takes the point where `path` first reaches its station along the main axis
+    /// (the path's last point when it never does).
+    fn encode(&self, path: &[Vec3]) -> Vec<f64> {
+        let origin = self.start.truncate();
+        let along = |p: Vec3| (p.truncate() - origin).dot(self.axis);
+        let mut x = Vec::with_capacity(self.lower.len());
+        for &s in &self.stations {
+            let mut hit = path.last().copied().unwrap_or(self.goal);
+            for w in path.windows(2) {
+                let (u0, u1) = (along(w[0]), along(w[1]));
+                if (u0 - s) * (u1 - s) <= 0.0 && u0 != u1 {
+                    hit = w[0] + (w[1] - w[0]) * ((s - u0) / (u1 - u0));
+                    break;
+                }
+            }
+            x.push((hit.truncate() - origin).dot(self.normal));
+            if self.three_d {
+                x.push(hit.z);
+            }
+        }
+        for ((v, lo), hi) in x.iter_mut().zip(&self.lower).zip(&self.upper) {
+            *v = if v.is_finite() { v.clamp(*lo, *hi) } else { 0.5 * (lo + hi) };
+        }
+        x
+    }
 }
 
 #[cfg(test)]

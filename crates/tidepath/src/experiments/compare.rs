@@ -9,10 +9,11 @@ use super::table::{rows_for, PlannerRow};
 use super::RunRecord;
 use crate::error::{Error, Result};
 use crate::optim::functions::{Function, FunctionObjective};
-use crate::optim::{self, Budget, Optimizer};
-use crate::planner::{build_optimizer, build_planner};
+use crate::optim::{self, Optimizer};
+use crate::planner::build_optimizer;
 use crate::rng::run_rng;
 use crate::scenario::{PlanRequest, Scenario};
+use crate::termination::{check_count, check_wall_time, Termination};
 
 /// Budget overrides shared by every run of an experiment.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -78,10 +79,12 @@ pub fn compare_scenario(
         return Err(Error::input("--runs", "must be at least 1, got 0"));
     }
     // Fail on a bad planner id or parameter before any run starts.
+    let registry = crate::planner::registry();
     for p in planners {
-        build_planner(p, scenario.planner.params.get(p), budget.population.or(scenario.planner.population))?;
+        let population = budget.population.or(scenario.planner.population);
+        registry.build(p, scenario.planner.params.get(p), population, &scenario.encoding)?;
     }
-    scenario.budget(&request(budget, "", 0))?;
+    scenario.termination(&request(budget, "", 0))?;
     let problems = vec![scenario.name.clone()];
     let all = tasks(master_seed, &problems, planners, runs);
     let start = Instant::now();
@@ -100,6 +103,8 @@ fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
         time_limit_s: budget.time_limit_s,
         parallel: false,
         smoother: None,
+        init: None,
+        stop: None,
     }
 }
 
@@ -110,16 +115,16 @@ fn scenario_run(scenario: &Scenario, budget: &RunBudget, t: &Task) -> Result<Run
         planner: t.planner.clone(),
         run: t.run,
         seed: t.seed,
-        cost: r.cost,
+        cost: r.cost_value(),
         feasible: r.feasible,
-        length_m: Some(r.metrics.length_m),
-        travel_time_s: Some(r.metrics.travel_time_s),
+        length_m: r.length_m(),
+        travel_time_s: r.travel_time_s(),
         evaluations: r.evaluations,
         iterations: r.iterations,
         elapsed_s: r.elapsed_s,
         stop_reason: r.stop_reason,
+        waypoints: r.paths().first().map(|p| p.iter().map(|q| q.to_array()).collect()).unwrap_or_default(),
         history: r.history,
-        waypoints: r.smoothed.clone().unwrap_or(r.waypoints),
     })
 }
 
@@ -160,10 +165,14 @@ pub fn compare_functions(
     }
     let labels: Vec<String> = problems.iter().map(|p| p.label.clone()).collect();
     let all = tasks(master_seed, &labels, planners, runs);
-    let b = Budget {
-        max_iterations: budget.iterations,
-        max_evaluations: budget.evaluations,
-        max_time: budget.time_limit_s.map(std::time::Duration::from_secs_f64),
+    let b = Termination {
+        max_iterations: budget.iterations.map(|n| check_count("--iterations", n)).transpose()?,
+        max_evaluations: budget.evaluations.map(|n| check_count("--evaluations", n)).transpose()?,
+        wall_time: Some(match budget.time_limit_s {
+            Some(t) => check_wall_time("--time-limit", t)?,
+            None => check_wall_time("default time limit", crate::scenario::default_time_limit_s()?)?,
+        }),
+        ..Termination::default()
     };
     let start = Instant::now();
     let records = execute(
@@ -173,7 +182,7 @@ pub fn compare_functions(
             let problem = problems.iter().find(|p| p.label == t.problem).expect("task problem exists");
             let objective = FunctionObjective::new(problem.function, problem.dim, problem.lower, problem.upper);
             let mut opt = factory(&t.planner)?;
-            let r = optim::run(opt.as_mut(), &objective, &b, run_rng(t.seed, 0), false, &mut |_| {});
+            let r = optim::run(opt.as_mut(), &objective, &b, &mut run_rng(t.seed, 0), false, &[], &mut |_| {});
             Ok(RunRecord {
                 problem: t.problem.clone(),
                 planner: t.planner.clone(),

@@ -3,7 +3,7 @@
 
 pub mod plan_json;
 
-pub use plan_json::{PlanFile, PlanReport};
+pub use plan_json::{MissionReport, PlanAbout, PlanFile, PlanReport, PLAN_FORMAT_VERSION};
 
 use std::path::Path;
 

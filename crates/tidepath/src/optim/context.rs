@@ -12,7 +12,9 @@ pub struct Context<'a> {
     /// Copies of the bounds, so optimizers' inner loops read them without a virtual call.
     lower: Vec<f64>,
     upper: Vec<f64>,
-    rng: Rng,
+    rng: &'a mut Rng,
+    /// Warm-start points, repaired, that [`Population::initial`] places first.
+    seeds: Vec<Vec<f64>>,
     evaluations: u64,
     eval_limit: u64,
     best_x: Vec<f64>,
@@ -22,12 +24,28 @@ pub struct Context<'a> {
 }
 
 impl<'a> Context<'a> {
-    pub fn new(objective: &'a dyn Objective, rng: Rng, eval_limit: Option<u64>, parallel: bool) -> Self {
+    pub fn new(
+        objective: &'a dyn Objective,
+        rng: &'a mut Rng,
+        eval_limit: Option<u64>,
+        parallel: bool,
+        seeds: &[Vec<f64>],
+    ) -> Self {
+        let seeds = seeds
+            .iter()
+            .filter(|s| s.len() == objective.dim())
+            .map(|s| {
+                let mut s = s.clone();
+                objective.repair(&mut s);
+                s
+            })
+            .collect();
         Self {
             objective,
             lower: objective.lower().to_vec(),
             upper: objective.upper().to_vec(),
             rng,
+            seeds,
             evaluations: 0,
             eval_limit: eval_limit.unwrap_or(u64::MAX),
             best_x: Vec::new(),
@@ -59,7 +77,12 @@ impl<'a> Context<'a> {
 
     /// The run's random stream. Draw everything an iteration needs from here, in a fixed order.
     pub fn rng(&mut self) -> &mut Rng {
-        &mut self.rng
+        self.rng
+    }
+
+    /// The warm-start points of this run (already inside the bounds and repaired).
+    pub fn seeds(&self) -> &[Vec<f64>] {
+        &self.seeds
     }
 
     pub fn repair(&self, x: &mut [f64]) {

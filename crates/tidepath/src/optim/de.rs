@@ -27,8 +27,17 @@ use rand::Rng as _;
 
 use super::{Context, Optimizer, Population};
 use crate::error::{Error, Result};
+use crate::registry::Param;
+
+/// The parameters' ranges, for the planner table.
+pub const PARAMS: &[Param] = &[
+    Param { name: "population", range: "integer in [4, 100000]", help: "population size NP (default 40)" },
+    Param { name: "f", range: "(0, 2]", help: "differential weight F (default 0.5)" },
+    Param { name: "cr", range: "[0, 1]", help: "crossover rate CR (default 0.9)" },
+];
 
 /// DE/rand/1/bin parameters.
+
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct DeParams {
@@ -49,12 +58,7 @@ impl Default for DeParams {
 impl DeParams {
     /// Rejects values the algorithm cannot run with.
     pub fn check(&self) -> Result<()> {
-        if self.population < 4 {
-            return Err(Error::input(
-                "planner.params.population",
-                format!("must be at least 4, got {}", self.population),
-            ));
-        }
+        super::check_population(self.population, 4)?;
         if !(self.f.is_finite() && self.f > 0.0 && self.f <= 2.0) {
             return Err(Error::input("planner.params.f", format!("must be in (0, 2], got {}", self.f)));
         }
@@ -110,7 +114,7 @@ impl Optimizer for De {
 
     fn init(&mut self, ctx: &mut Context<'_>) {
         let n = self.params.population;
-        self.x = Population::uniform(n, ctx);
+        self.x = Population::initial(n, ctx);
         for i in 0..n {
             ctx.repair(self.x.row_mut(i));
         }
@@ -171,7 +175,8 @@ impl Optimizer for De {
 mod tests {
     use super::*;
     use crate::optim::functions::{Function, FunctionObjective};
-    use crate::optim::{run, Budget};
+    use crate::optim::run;
+    use crate::termination::Termination;
 
     #[test]
     fn defaults_and_check() {
@@ -205,7 +210,8 @@ mod tests {
     fn converges_on_sphere_and_never_worsens() {
         let obj = FunctionObjective::new(Function::Sphere, 5, -5.12, 5.12);
         let mut de = De::new(DeParams::default());
-        let r = run(&mut de, &obj, &Budget::iterations(200), crate::rng::run_rng(1, 0), false, &mut |_| {});
+        let r =
+            run(&mut de, &obj, &Termination::iterations(200), &mut crate::rng::run_rng(1, 0), false, &[], &mut |_| {});
         assert!(r.best_cost < 1e-8, "{}", r.best_cost);
         assert!(de.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
         let min = de.cost.iter().copied().fold(f64::INFINITY, f64::min);

@@ -41,9 +41,26 @@ use rand_distr::StandardNormal;
 
 use super::{Context, Optimizer, Population};
 use crate::error::{Error, Result};
+use crate::registry::Param;
 use crate::rng::Rng;
 
+/// The parameters' ranges, for the planner table.
+pub const PARAMS: &[Param] = &[
+    Param {
+        name: "coding",
+        range: "\"real\" or \"binary\"",
+        help: "real-coded or bit-string chromosomes (default real)",
+    },
+    Param { name: "population", range: "integer in [2, 100000]", help: "population size (default 50)" },
+    Param { name: "crossover_rate", range: "[0, 1]", help: "probability a parent pair is crossed (default 0.8)" },
+    Param { name: "mutation_rate", range: "[0, 1], or absent", help: "per gene or per bit; absent: 1/D" },
+    Param { name: "bits", range: "integer in [1, 52]", help: "bits per variable, binary coding (default 20)" },
+    Param { name: "elitism", range: "integer below population", help: "best individuals copied unchanged (default 1)" },
+    Param { name: "sigma_fraction", range: "(0, 1]", help: "Gaussian step / box width, real coding (default 0.1)" },
+];
+
 /// How a GA individual is coded.
+
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum GaCoding {
@@ -112,12 +129,7 @@ impl GaParams {
 
     /// Rejects values the algorithm cannot run with.
     pub fn check(&self) -> Result<()> {
-        if self.population < 2 {
-            return Err(Error::input(
-                "planner.params.population",
-                format!("must be at least 2, got {}", self.population),
-            ));
-        }
+        super::check_population(self.population, 2)?;
         if !(0.0..=1.0).contains(&self.crossover_rate) {
             return Err(Error::input(
                 "planner.params.crossover_rate",
@@ -318,6 +330,15 @@ impl Optimizer for Ga {
             let bits = self.params.bits;
             let full = (1u64 << bits) - 1;
             self.chrom = (0..n * dim).map(|_| ctx.rng().random::<u64>() & full).collect();
+            // Warm start: the nearest chromosome to each seed point, in the first rows.
+            let k = ctx.seeds().len().min((n / 2).max(1));
+            for i in 0..k {
+                for d in 0..dim {
+                    let (lo, hi) = (ctx.lower()[d], ctx.upper()[d]);
+                    let u = if hi > lo { ((ctx.seeds()[i][d] - lo) / (hi - lo)).clamp(0.0, 1.0) } else { 0.0 };
+                    self.chrom[i * dim + d] = (u * full as f64).round() as u64 & full;
+                }
+            }
             self.x = Population::zeros(n, dim);
             for i in 0..n {
                 Self::decode_into(&self.chrom[i * dim..(i + 1) * dim], bits, self.x.row_mut(i), ctx);
@@ -327,7 +348,7 @@ impl Optimizer for Ga {
             self.ka = vec![0; dim];
             self.kb = vec![0; dim];
         } else {
-            self.x = Population::uniform(n, ctx);
+            self.x = Population::initial(n, ctx);
             for i in 0..n {
                 ctx.repair(self.x.row_mut(i));
             }
@@ -446,7 +467,8 @@ impl Optimizer for Ga {
 mod tests {
     use super::*;
     use crate::optim::functions::{Function, FunctionObjective};
-    use crate::optim::{run, Budget};
+    use crate::optim::run;
+    use crate::termination::Termination;
     use rand::SeedableRng;
 
     #[test]
@@ -522,7 +544,15 @@ mod tests {
         for params in [GaParams::seed000(), GaParams::seed002()] {
             let obj = FunctionObjective::new(Function::Sphere, 4, -5.12, 5.12);
             let mut ga = Ga::new(params.clone());
-            let r = run(&mut ga, &obj, &Budget::iterations(100), crate::rng::run_rng(2, 0), false, &mut |_| {});
+            let r = run(
+                &mut ga,
+                &obj,
+                &Termination::iterations(100),
+                &mut crate::rng::run_rng(2, 0),
+                false,
+                &[],
+                &mut |_| {},
+            );
             assert!(r.best_cost < 0.1, "{:?}: {}", params.coding, r.best_cost);
             // Elitism: the population still holds the best point seen.
             let min = ga.cost.iter().copied().fold(f64::INFINITY, f64::min);

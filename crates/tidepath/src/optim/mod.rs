@@ -16,9 +16,25 @@ pub mod population;
 pub mod pso;
 pub mod runner;
 
+pub use crate::termination::{StopReason, Termination};
 pub use context::Context;
 pub use population::Population;
-pub use runner::{run, Budget, Progress, RunResult, StopReason};
+pub use runner::{run, Progress, RunResult, DEFAULT_ITERATIONS};
+
+/// The largest population any optimizer accepts: beyond it memory, not search, is the limit
+/// (a 40-waypoint 3-D path at 100,000 individuals already holds 64 MB of vectors).
+pub const MAX_POPULATION: usize = 100_000;
+
+/// Checks a population size against `min` and [`MAX_POPULATION`].
+pub fn check_population(n: usize, min: usize) -> crate::error::Result<()> {
+    if n < min || n > MAX_POPULATION {
+        return Err(crate::error::Error::input(
+            "planner.params.population",
+            format!("must be in [{min}, {MAX_POPULATION}], got {n}"),
+        ));
+    }
+    Ok(())
+}
 
 /// Reusable buffers for one evaluation, so the hot path never allocates.
 /// Each rayon worker gets its own; objectives that need none ignore it.

@@ -30,6 +30,19 @@ impl Population {
         pop
     }
 
+    /// The initial population of an optimizer: `size` uniform points, of which the first rows
+    /// are replaced by the run's warm-start points (at most half the population, so a warm
+    /// start guides the search without collapsing its diversity). The uniform draws happen
+    /// either way, so a warm start changes no later random number.
+    pub fn initial(size: usize, ctx: &mut Context<'_>) -> Self {
+        let mut pop = Self::uniform(size, ctx);
+        let k = ctx.seeds().len().min((size / 2).max(1)).min(size);
+        for i in 0..k {
+            pop.row_mut(i).copy_from_slice(&ctx.seeds()[i]);
+        }
+        pop
+    }
+
     pub fn dim(&self) -> usize {
         self.dim
     }

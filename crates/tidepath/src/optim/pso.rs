@@ -34,8 +34,29 @@ use rand::Rng as _;
 
 use super::{Context, Optimizer, Population};
 use crate::error::{Error, Result};
+use crate::registry::Param;
+
+/// The parameters' ranges, for the planner table.
+pub const PARAMS: &[Param] = &[
+    Param { name: "population", range: "integer in [2, 100000]", help: "number of particles (default 40)" },
+    Param { name: "w_start", range: "finite", help: "inertia weight at the start (default 0.729)" },
+    Param { name: "w_end", range: "finite", help: "inertia weight after the schedule (default 0.729)" },
+    Param {
+        name: "w_schedule_iterations",
+        range: "integer >= 1, or absent",
+        help: "length of the linear inertia schedule; absent: constant w_start",
+    },
+    Param { name: "c1", range: "finite, >= 0", help: "cognitive coefficient (default 1.494)" },
+    Param { name: "c2", range: "finite, >= 0", help: "social coefficient (default 1.494)" },
+    Param {
+        name: "vmax_fraction",
+        range: "finite, > 0",
+        help: "velocity clamp as a fraction of the box width (default 1)",
+    },
+];
 
 /// PSO parameters. Defaults: seed 002's set (see the module documentation).
+
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct PsoParams {
@@ -106,12 +127,7 @@ impl PsoParams {
 
     /// Rejects values the algorithm cannot run with.
     pub fn check(&self) -> Result<()> {
-        if self.population < 2 {
-            return Err(Error::input(
-                "planner.params.population",
-                format!("must be at least 2, got {}", self.population),
-            ));
-        }
+        super::check_population(self.population, 2)?;
         for (name, v) in [("w_start", self.w_start), ("w_end", self.w_end), ("c1", self.c1), ("c2", self.c2)] {
             if !v.is_finite() {
                 return Err(Error::input(format!("planner.params.{name}"), format!("must be finite, got {v}")));
@@ -226,7 +242,7 @@ impl Optimizer for Pso {
         let dim = ctx.dim();
         self.vmax = (0..dim).map(|d| self.params.vmax_fraction * ctx.range(d)).collect();
         // Random draws: positions (point by point), then velocities (point by point).
-        self.x = Population::uniform(n, ctx);
+        self.x = Population::initial(n, ctx);
         self.v = vec![0.0; n * dim];
         for i in 0..n {
             for d in 0..dim {
@@ -284,7 +300,8 @@ impl Optimizer for Pso {
 mod tests {
     use super::*;
     use crate::optim::functions::{Function, FunctionObjective};
-    use crate::optim::{run, Budget};
+    use crate::optim::run;
+    use crate::termination::Termination;
 
     #[test]
     fn defaults_and_presets() {
@@ -335,7 +352,8 @@ mod tests {
     fn stays_in_box_and_converges_on_sphere() {
         let obj = FunctionObjective::new(Function::Sphere, 5, -5.12, 5.12);
         let mut pso = Pso::new(PsoParams::default());
-        let r = run(&mut pso, &obj, &Budget::iterations(100), crate::rng::run_rng(3, 0), false, &mut |_| {});
+        let r =
+            run(&mut pso, &obj, &Termination::iterations(100), &mut crate::rng::run_rng(3, 0), false, &[], &mut |_| {});
         assert!(r.best_cost < 1e-6, "{}", r.best_cost);
         assert!(pso.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
         assert_eq!(pso.gbest_cost, r.best_cost);

@@ -16,6 +16,9 @@ pub struct Assessment {
     pub collisions: u32,
     /// Waypoints outside the domain or (3-D) outside the vehicle's depth band.
     pub bounds_violations: u32,
+    /// 1 when the path does not start at the mission's start, 1 more when it does not end at
+    /// its goal.
+    pub endpoint_violations: u32,
     /// Segment pieces where the current stops the vehicle from holding its track.
     pub current_blocked: u32,
     /// Joints whose heading change exceeds the vehicle's limit, and the summed excess (rad).
@@ -31,7 +34,12 @@ pub struct Assessment {
 
 impl Assessment {
     pub fn violation_count(&self) -> u32 {
-        self.collisions + self.bounds_violations + self.current_blocked + self.turn_violations + self.pitch_violations
+        self.collisions
+            + self.bounds_violations
+            + self.endpoint_violations
+            + self.current_blocked
+            + self.turn_violations
+            + self.pitch_violations
     }
 
     pub fn feasible(&self) -> bool {
@@ -39,28 +47,30 @@ impl Assessment {
     }
 }
 
-/// Relative slack on the domain box, so waypoints placed exactly on a face by an encoding are
-/// not rejected by rounding.
-const BOUNDS_SLACK: f64 = 1e-9;
-
 impl PathModel<'_> {
-    /// Judges `points` (start and goal included). `times` receives the arrival time at each point.
+    /// Judges `points` (start and goal included). `times` receives the arrival time at each
+    /// point, on the clock every segment's motion check used.
     pub fn assess(&self, points: &[Vec3], times: &mut Vec<f64>) -> Assessment {
-        let mut out = Assessment { current_blocked: self.arrival_times(points, times), ..Default::default() };
-        let world = self.world;
+        let mut out = Assessment::default();
         let veh = self.vehicle;
-        let three_d = world.dims == Dims::Three;
-        let slack = world.bounds.size().max_element() * BOUNDS_SLACK;
-        let outer = world.bounds.inflate(slack);
+        let three_d = self.world.dims == Dims::Three;
+        let validator = &self.validator;
 
         for p in points {
-            let outside_depth = three_d && (p.z > veh.z_max() + slack || p.z < veh.z_min() - slack);
-            if !outer.contains(*p) || outside_depth {
+            if validator.in_bounds(*p).is_err() {
                 out.bounds_violations += 1;
             }
         }
+        let tol = self.endpoint_tolerance();
+        // A NaN distance counts as off.
+        let off = |p: Option<&Vec3>, q: Vec3| {
+            p.is_none_or(|p| {
+                let d = p.distance(q);
+                d.is_nan() || d > tol
+            })
+        };
+        out.endpoint_violations = u32::from(off(points.first(), self.start)) + u32::from(off(points.last(), self.goal));
 
-        let safety = veh.safety_distance;
         // Angles are compared through their cosine and tangent so the common case needs no
         // inverse trigonometry; acos/atan run only for violations and once for the maxima.
         let cos_turn_limit = veh.max_turn.cos();
@@ -68,19 +78,18 @@ impl PathModel<'_> {
         let mut min_cos_turn = 1.0f64;
         let mut max_slope = 0.0f64;
         let mut prev_h: Option<(Vec2, f64)> = None;
-        for (i, w) in points.windows(2).enumerate() {
+        times.clear();
+        let mut t = self.departure_time;
+        times.push(t);
+        for w in points.windows(2) {
             let (a, b) = (w[0], w[1]);
             let dir = b - a;
             out.length += dir.length();
-            if world.segment_hits_terrain(a, b, safety) {
-                out.collisions += 1;
-            }
-            let (ta, tb) = (times[i], times[i + 1]);
-            self.obstacles.for_each_candidate(a, b, |k| {
-                if world.obstacles[k].segment_hits(a, b, ta, tb, safety) {
-                    out.collisions += 1;
-                }
-            });
+            let m = validator.motion(a, b, t);
+            out.collisions += m.collisions;
+            out.current_blocked += m.blocked;
+            t = m.arrival;
+            times.push(t);
             let h = dir.truncate();
             let h_len = h.length();
             if three_d && dir.z != 0.0 {
@@ -106,7 +115,7 @@ impl PathModel<'_> {
         }
         out.max_turn = min_cos_turn.acos();
         out.max_pitch = max_slope.atan();
-        out.travel_time = times.last().copied().unwrap_or(self.departure_time) - self.departure_time;
+        out.travel_time = t - self.departure_time;
         out
     }
 }

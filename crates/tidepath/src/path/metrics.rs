@@ -37,10 +37,7 @@ impl PathModel<'_> {
     pub fn min_clearance(&self, points: &[Vec3], times: &[f64]) -> Option<f64> {
         let mut best = f64::INFINITY;
         for (i, w) in points.windows(2).enumerate() {
-            best = best.min(self.world.segment_terrain_clearance(w[0], w[1]));
-            for o in &self.world.obstacles {
-                best = best.min(o.segment_clearance(w[0], w[1], times[i], times[i + 1]));
-            }
+            best = best.min(self.validator.motion_clearance(w[0], w[1], times[i]));
         }
         best.is_finite().then_some(best)
     }

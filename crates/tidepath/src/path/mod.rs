@@ -1,57 +1,79 @@
 //! The one shared evaluation of a path: length, travel time through currents, turn and pitch
 //! angles, clearance, collisions and feasibility. Planners, cost models, `eval` and the
-//! experiment runner all call this module, so a number means the same thing everywhere.
+//! experiment runner all call this module, so a number means the same thing everywhere. Every
+//! segment is judged by the [`crate::validity`] motion check, on the clock that gives the
+//! reported travel time.
 
 mod assess;
 mod metrics;
-mod obstacle_index;
-mod travel;
 mod violations;
 
+pub use crate::validity::{ModelSettings, TravelModel};
 pub use assess::Assessment;
 pub use metrics::Metrics;
-pub use travel::TravelModel;
 pub use violations::{Violation, ViolationKind};
 
 use crate::geom::Vec3;
+use crate::mission::Mission;
+use crate::validity::Validator;
 use crate::vehicle::Vehicle;
 use crate::world::World;
 
-/// Numerical settings of the evaluation, set per scenario under `[model]`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ModelSettings {
-    pub travel: TravelModel,
-    /// Longest sub-step (m) over which the current is taken as constant when integrating
-    /// travel time along a segment (crab model). Smaller is more accurate and slower.
-    pub current_step: f64,
-}
-
-impl Default for ModelSettings {
-    fn default() -> Self {
-        Self { travel: TravelModel::Crab, current_step: 500.0 }
-    }
-}
-
-/// A world, a vehicle and a departure time: everything needed to judge a path.
+/// A world, a mission and the model settings: everything needed to judge a path.
 #[derive(Clone, Debug)]
 pub struct PathModel<'a> {
     pub world: &'a World,
     pub vehicle: &'a Vehicle,
-    pub departure_time: f64,
     pub settings: &'a ModelSettings,
-    /// Which obstacles each segment needs testing against; built once per model.
-    obstacles: obstacle_index::ObstacleIndex,
+    pub departure_time: f64,
+    pub start: Vec3,
+    pub goal: Vec3,
+    /// State and motion checks; the same the planners use.
+    pub validator: Validator<'a>,
 }
 
 impl<'a> PathModel<'a> {
-    pub fn new(world: &'a World, vehicle: &'a Vehicle, departure_time: f64, settings: &'a ModelSettings) -> Self {
-        let obstacles = obstacle_index::ObstacleIndex::new(world, vehicle.safety_distance);
-        Self { world, vehicle, departure_time, settings, obstacles }
+    pub fn new(world: &'a World, mission: &'a Mission, settings: &'a ModelSettings) -> Self {
+        Self {
+            world,
+            vehicle: &mission.vehicle,
+            settings,
+            departure_time: mission.departure_time,
+            start: mission.start,
+            goal: mission.goal,
+            validator: Validator::new(world, &mission.vehicle, settings),
+        }
     }
 
     /// Total 3-D length of a polyline.
     pub fn length(points: &[Vec3]) -> f64 {
         points.windows(2).map(|w| w[0].distance(w[1])).sum()
+    }
+
+    /// Fills `times` with the arrival time at each point (`times[0]` = departure) and returns the
+    /// number of segment pieces the vehicle cannot traverse against the current.
+    pub fn arrival_times(&self, points: &[Vec3], times: &mut Vec<f64>) -> u32 {
+        times.clear();
+        let mut t = self.departure_time;
+        times.push(t);
+        let mut blocked = 0;
+        for w in points.windows(2) {
+            let (dt, b) = self.validator.travel_time(w[0], w[1], t);
+            t += dt;
+            blocked += b;
+            times.push(t);
+        }
+        blocked
+    }
+
+    /// Time to traverse a -> b leaving at `t0`, and the number of impossible pieces.
+    pub fn segment_time(&self, a: Vec3, b: Vec3, t0: f64) -> (f64, u32) {
+        self.validator.travel_time(a, b, t0)
+    }
+
+    /// Tolerance for "the path starts at the start and ends at the goal": 1e-9 of the domain.
+    pub fn endpoint_tolerance(&self) -> f64 {
+        self.world.bounds.size().max_element() * 1e-9
     }
 }
 

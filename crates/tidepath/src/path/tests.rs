@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::geom::{Aabb, Vec2, Vec3};
+use crate::mission::Mission;
 use crate::world::terrain::{GaussianPeaks, Peak};
 use crate::world::{Current, Obstacle, Shape, Terrain};
 
@@ -19,14 +20,14 @@ fn vehicle() -> Vehicle {
         depth_min: 0.0,
         depth_max: 100.0,
         safety_distance: 1.0,
-        ..Vehicle::default()
     }
 }
 
 fn metrics_of(w: &World, points: &[Vec3]) -> (Metrics, Vec<Violation>) {
     let v = vehicle();
     let s = ModelSettings { current_step: 10.0, ..ModelSettings::default() };
-    let m = PathModel::new(w, &v, 0.0, &s);
+    let mission = Mission::new("m", v, points[0], *points.last().unwrap(), 0.0);
+    let m = PathModel::new(w, &mission, &s);
     (m.metrics(points), m.violations(points))
 }
 
@@ -77,9 +78,11 @@ fn vector_sum_travel_time_follows_seed_003_eq_17() {
     w.current = Current::Uniform(Vec3::new(0.0, 1.5, 0.0));
     let v = vehicle();
     let s = ModelSettings { travel: TravelModel::VectorSum, current_step: 10.0 };
-    let m = PathModel::new(&w, &v, 0.0, &s);
+    let (a, b) = (Vec3::new(0.0, 10.0, -50.0), Vec3::new(100.0, 10.0, -50.0));
+    let mission = Mission::new("m", v, a, b, 0.0);
+    let m = PathModel::new(&w, &mission, &s);
     // |v d + c| = |(2, 1.5)| = 2.5 at both ends: 100 m / 2.5 = 40 s.
-    let t = m.metrics(&[Vec3::new(0.0, 10.0, -50.0), Vec3::new(100.0, 10.0, -50.0)]).travel_time_s;
+    let t = m.metrics(&[a, b]).travel_time_s;
     assert!((t - 40.0).abs() < 1e-12);
 }
 
@@ -139,10 +142,11 @@ fn general_cost_terms_by_hand() {
     let w = world();
     let v = vehicle();
     let s = ModelSettings::default();
-    let m = PathModel::new(&w, &v, 0.0, &s);
     let p = [Vec3::new(10.0, 10.0, -50.0), Vec3::new(40.0, 10.0, -50.0), Vec3::new(40.0, 50.0, -50.0)];
+    let mission = Mission::new("m", v, p[0], p[2], 0.0);
+    let m = PathModel::new(&w, &mission, &s);
     let weights = GeneralWeights { length: 1.0, time: 2.0, collision: 10.0, turn: 3.0, pitch: 1.0 };
-    let cost = GeneralCost::new(weights, p[0], p[2], v.speed).unwrap();
+    let cost = GeneralCost::new(weights).unwrap();
     let (total, terms) = cost.breakdown(&m, &p);
     // Straight distance 50 m, 25 s. Path 70 m, 35 s. One turn of 90 degrees against 60.
     let expect = [1.4, 2.0 * 1.4, 0.0, 3.0 * (1.0 + 30f64.to_radians()), 0.0];

@@ -1,8 +1,9 @@
 //! The list of reasons a path is infeasible, for `eval` and the plan JSON.
 
 use super::assess::{slope, turn_cos};
-use super::{PathModel, TravelModel};
+use super::PathModel;
 use crate::geom::{Vec2, Vec3};
+use crate::validity::{MotionIssue, StateIssue};
 use crate::world::Dims;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -12,6 +13,8 @@ pub enum ViolationKind {
     Obstacle,
     Bounds,
     Depth,
+    /// The path does not start at the mission's start or end at its goal.
+    Endpoint,
     Current,
     Turn,
     Pitch,
@@ -30,66 +33,81 @@ impl PathModel<'_> {
     /// Every violated constraint, in path order. Empty exactly when
     /// [`super::Assessment::feasible`] holds.
     pub fn violations(&self, points: &[Vec3]) -> Vec<Violation> {
-        let mut times = Vec::with_capacity(points.len());
-        self.arrival_times(points, &mut times);
         let world = self.world;
         let veh = self.vehicle;
-        let three_d = world.dims == Dims::Three;
-        let slack = world.bounds.size().max_element() * 1e-9;
-        let outer = world.bounds.inflate(slack);
+        let validator = &self.validator;
         let mut out = Vec::new();
         let mut push = |kind, index, message: String| out.push(Violation { kind, index, message });
 
+        let tol = self.endpoint_tolerance();
+        let ends =
+            [(points.first(), self.start, "start", 0), (points.last(), self.goal, "goal", points.len().max(1) - 1)];
+        for (p, want, what, i) in ends {
+            match p {
+                Some(p) if p.distance(want) <= tol => {}
+                Some(p) => push(
+                    ViolationKind::Endpoint,
+                    i,
+                    format!("waypoint {i} {} is not the mission {what} {}", fmt_point(*p), fmt_point(want)),
+                ),
+                None => push(ViolationKind::Endpoint, 0, format!("the path is empty: it does not reach the {what}")),
+            }
+        }
         for (i, p) in points.iter().enumerate() {
-            if !outer.contains(*p) {
-                push(ViolationKind::Bounds, i, format!("waypoint {i} {} is outside the domain", fmt_point(*p)));
-            } else if three_d && (p.z > veh.z_max() + slack || p.z < veh.z_min() - slack) {
-                push(
+            match validator.in_bounds(*p) {
+                Err(StateIssue::OutsideDepthBand) => push(
                     ViolationKind::Depth,
                     i,
                     format!(
                         "waypoint {i} at depth {:.1} m is outside the depth band [{}, {}] m",
                         -p.z, veh.depth_min, veh.depth_max
                     ),
-                );
+                ),
+                Err(_) => {
+                    push(ViolationKind::Bounds, i, format!("waypoint {i} {} is outside the domain", fmt_point(*p)))
+                }
+                Ok(()) => {}
             }
         }
         let safety = veh.safety_distance;
+        let three_d = world.dims == Dims::Three;
         let mut prev_h: Option<(Vec2, f64)> = None;
+        let mut t = self.departure_time;
         for (i, w) in points.windows(2).enumerate() {
             let (a, b) = (w[0], w[1]);
             let dir = b - a;
-            if world.segment_hits_terrain(a, b, safety) {
-                let c = world.segment_terrain_clearance(a, b);
-                push(
-                    ViolationKind::Terrain,
-                    i,
-                    format!("segment {i} passes {c:.2} m above the seabed (safety distance {safety} m)"),
-                );
-            }
-            for (k, o) in world.obstacles.iter().enumerate() {
-                if o.segment_hits(a, b, times[i], times[i + 1], safety) {
-                    let c = o.segment_clearance(a, b, times[i], times[i + 1]);
-                    push(
-                        ViolationKind::Obstacle,
-                        i,
-                        format!("segment {i} passes {c:.2} m from obstacle {k} (safety distance {safety} m)"),
-                    );
-                }
-            }
-            if self.settings.travel == TravelModel::Crab {
-                let blocked = self.segment_time(a, b, times[i]).1;
-                if blocked > 0 {
-                    push(
+            let mut issues = Vec::new();
+            let m = validator.motion_with(a, b, t, |issue| issues.push(issue));
+            for issue in issues {
+                match issue {
+                    MotionIssue::Terrain => {
+                        let c = world.segment_terrain_clearance(a, b);
+                        let at = if c < 0.0 {
+                            format!("{:.2} m below the seabed", -c)
+                        } else {
+                            format!("{c:.2} m above the seabed")
+                        };
+                        push(ViolationKind::Terrain, i, format!("segment {i} passes {at} (safety distance {safety} m)"));
+                    }
+                    MotionIssue::Obstacle(k) => {
+                        let c = obstacle_clearance(self, k, a, b, t);
+                        push(
+                            ViolationKind::Obstacle,
+                            i,
+                            format!("segment {i} passes {c:.2} m from obstacle {k} (safety distance {safety} m)"),
+                        );
+                    }
+                    MotionIssue::Current { pieces } => push(
                         ViolationKind::Current,
                         i,
                         format!(
-                            "segment {i}: the current stops a {} m/s vehicle from holding the track on {blocked} piece(s)",
+                            "segment {i}: the current stops a {} m/s vehicle from holding the track on {pieces} piece(s)",
                             veh.speed
                         ),
-                    );
+                    ),
                 }
             }
+            t = m.arrival;
             let h = dir.truncate();
             let h_len = h.length();
             if three_d && dir.z != 0.0 && slope(dir, h_len) > veh.max_pitch.tan() {
@@ -123,6 +141,14 @@ impl PathModel<'_> {
         }
         out
     }
+}
+
+/// Clearance of segment a -> b (leaving at `t0`) to obstacle `k`, on the validator's clock.
+fn obstacle_clearance(model: &PathModel<'_>, k: usize, a: Vec3, b: Vec3, t0: f64) -> f64 {
+    let o = &model.world.obstacles[k];
+    let mut best = f64::INFINITY;
+    model.validator.for_each_piece(a, b, t0, |pc| best = best.min(o.segment_clearance(pc.p0, pc.p1, pc.t0, pc.t1)));
+    best
 }
 
 fn fmt_point(p: Vec3) -> String {

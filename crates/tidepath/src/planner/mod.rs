@@ -1,57 +1,127 @@
-//! Planners: one interface for every way of producing a path. An optimization planner joins an
-//! encoding, a cost model and an optimizer; graph and sampling planners (later issues)
-//! implement the same trait and search the world directly.
+//! Planners: one interface for every way of producing a path (OMPL's `Planner::solve` is the
+//! model). An optimization planner joins an encoding, a cost model and an optimizer; graph,
+//! sampling and composite planners implement the same trait and search the world directly
+//! through the shared [`crate::validity`] checks.
+//!
+//! A planner returns raw paths and its search statistics ([`PlannerOutput`]); [`solve`] wraps
+//! every planner the same way: it checks start and goal first, runs the planner, smooths,
+//! evaluates each path with the shared path evaluation and sets the [`Status`].
 
 mod objective;
 mod optimizer_planner;
 pub mod registry;
+pub mod solve;
+mod status;
 
 pub use objective::PathObjective;
 pub use optimizer_planner::OptimizerPlanner;
-pub use registry::{build_optimizer, build_planner, planner_info, PlannerInfo, PLANNERS};
+pub use registry::{build_optimizer, registry, BuildPlanner, PlannerSettings, PLANNERS};
+pub use solve::{solve, MissionPlan, Plan, SolveOptions};
+pub use status::Status;
 
 use std::time::Duration;
 
 use crate::cost::CostModel;
-use crate::encoding::Encoding;
 use crate::geom::Vec3;
-use crate::optim::{Budget, Progress, StopReason};
-use crate::path::PathModel;
+use crate::mission::Mission;
+use crate::optim::Progress;
+use crate::path::{ModelSettings, PathModel};
 use crate::rng::Rng;
+use crate::termination::{StopReason, Termination};
+use crate::world::{Dims, World};
 
-/// One planning query: judge paths with `model` and `cost`, from `start` to `goal`.
+/// One planning query: a world answering at time t, a cost model, and one or more missions.
+#[derive(Clone, Copy)]
 pub struct Problem<'a> {
-    pub model: PathModel<'a>,
+    pub world: &'a World,
+    pub settings: &'a ModelSettings,
     pub cost: &'a dyn CostModel,
-    /// The decision-vector layout optimization planners search over.
-    pub encoding: &'a dyn Encoding,
-    pub start: Vec3,
-    pub goal: Vec3,
+    pub missions: &'a [Mission],
 }
 
-/// What a planner returns: the path (start and goal included) and how the search went.
-#[derive(Clone, Debug)]
-pub struct PlanOutcome {
-    pub waypoints: Vec<Vec3>,
-    pub cost: f64,
-    pub evaluations: u64,
+impl<'a> Problem<'a> {
+    /// The path evaluation of mission `i` (builds its obstacle index: call once per run).
+    pub fn path_model(&self, i: usize) -> PathModel<'a> {
+        PathModel::new(self.world, &self.missions[i], self.settings)
+    }
+
+    /// The height band a 3-D path of mission `i` may use, or `None` in a 2-D world.
+    pub fn z_range(&self, i: usize) -> Option<(f64, f64)> {
+        let v = &self.missions[i].vehicle;
+        let b = &self.world.bounds;
+        (self.world.dims == Dims::Three).then(|| (b.min.z.max(v.z_min()), b.max.z.min(v.z_max())))
+    }
+}
+
+/// What a planner claims beyond its paths, from a direct check or a proof.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Claim {
+    /// The paths are optimal for the planner's model (status `exact` if they are feasible).
+    Optimal,
+    /// No path exists; the reason names the bottleneck.
+    Unreachable(String),
+}
+
+/// Search statistics, in each planner's own units.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SearchStats {
     pub iterations: u64,
-    /// Best cost after initialisation and after each iteration.
+    pub evaluations: u64,
+    pub expansions: u64,
+    pub samples: u64,
+    /// Best cost after initialisation and after each iteration (optimizers).
     pub history: Vec<f64>,
     pub stop_reason: StopReason,
     pub elapsed: Duration,
 }
 
+impl Default for SearchStats {
+    fn default() -> Self {
+        Self {
+            iterations: 0,
+            evaluations: 0,
+            expansions: 0,
+            samples: 0,
+            history: Vec::new(),
+            stop_reason: StopReason::Completed,
+            elapsed: Duration::ZERO,
+        }
+    }
+}
+
+/// A planner's raw result: one path per mission (start and goal included; empty when none was
+/// found), a claim, and the search statistics.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannerOutput {
+    pub paths: Vec<Vec<Vec3>>,
+    pub claim: Option<Claim>,
+    pub stats: SearchStats,
+}
+
+/// Run options that change no result.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RunOptions<'a> {
+    /// A path per mission to start from (a warm start): optimizers seed part of their
+    /// population with it, tree planners their tree, ant colonies their pheromone.
+    pub init: Option<&'a [Vec<Vec3>]>,
+    /// Evaluate populations on the rayon pool; results are identical either way.
+    pub parallel: bool,
+}
+
 pub trait Planner: Send {
     fn id(&self) -> &'static str;
-    /// Plans within `budget`, drawing every random number from `rng`. `parallel` allows
-    /// evaluating populations on the rayon pool; results do not depend on it.
+    /// Rejects a problem this planner cannot take (an input error naming the setting), before
+    /// any planning; the default accepts every problem.
+    fn check(&self, _problem: &Problem<'_>) -> crate::error::Result<()> {
+        Ok(())
+    }
+    /// Plans within `termination`, drawing every random number from `rng`.
     fn plan(
         &mut self,
         problem: &Problem<'_>,
-        budget: &Budget,
-        rng: Rng,
-        parallel: bool,
+        termination: &Termination,
+        rng: &mut Rng,
+        options: RunOptions<'_>,
         observer: &mut dyn FnMut(&Progress),
-    ) -> PlanOutcome;
+    ) -> PlannerOutput;
 }

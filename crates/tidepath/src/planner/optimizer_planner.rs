@@ -1,16 +1,38 @@
-//! Encoding + cost model + optimizer, run by the shared optimizer runner.
+//! Encoding + cost model + optimizer, run by the shared optimizer runner. The encoding is a
+//! setting of this kind of planner, not part of the problem.
 
-use super::{PathObjective, PlanOutcome, Planner, Problem};
-use crate::optim::{self, Budget, Optimizer, Progress};
+use super::{PathObjective, Planner, PlannerOutput, Problem, RunOptions, SearchStats};
+use crate::encoding::{self, Encoding, EncodingArgs, EncodingSpec};
+use crate::error::Result;
+use crate::optim::{self, Optimizer, Progress};
 use crate::rng::Rng;
+use crate::termination::Termination;
 
 pub struct OptimizerPlanner {
     optimizer: Box<dyn Optimizer>,
+    encoding: EncodingSpec,
 }
 
 impl OptimizerPlanner {
-    pub fn new(optimizer: Box<dyn Optimizer>) -> Self {
-        Self { optimizer }
+    pub fn new(optimizer: Box<dyn Optimizer>, encoding: EncodingSpec) -> Self {
+        Self { optimizer, encoding }
+    }
+
+    /// The encoding of every mission of `problem` under this planner's setting.
+    pub fn encodings(&self, problem: &Problem<'_>) -> Result<Vec<Box<dyn Encoding>>> {
+        let entry = encoding::registry().get(&self.encoding.kind)?.build;
+        (0..problem.missions.len())
+            .map(|i| {
+                let m = &problem.missions[i];
+                entry(&EncodingArgs {
+                    start: m.start,
+                    goal: m.goal,
+                    waypoints: self.encoding.waypoints,
+                    bounds: &problem.world.bounds,
+                    z_range: problem.z_range(i),
+                })
+            })
+            .collect()
     }
 }
 
@@ -19,24 +41,41 @@ impl Planner for OptimizerPlanner {
         self.optimizer.id()
     }
 
+    fn check(&self, problem: &Problem<'_>) -> Result<()> {
+        self.encodings(problem).map(|_| ())
+    }
+
     fn plan(
         &mut self,
         problem: &Problem<'_>,
-        budget: &Budget,
-        rng: Rng,
-        parallel: bool,
+        termination: &Termination,
+        rng: &mut Rng,
+        options: RunOptions<'_>,
         observer: &mut dyn FnMut(&Progress),
-    ) -> PlanOutcome {
-        let objective = PathObjective::new(problem);
-        let r = optim::run(self.optimizer.as_mut(), &objective, budget, rng, parallel, observer);
-        PlanOutcome {
-            waypoints: problem.encoding.decode(&r.best_x),
-            cost: r.best_cost,
-            evaluations: r.evaluations,
-            iterations: r.iterations,
-            history: r.history,
-            stop_reason: r.stop_reason,
-            elapsed: r.elapsed,
+    ) -> PlannerOutput {
+        // The encodings were built once when the planner was checked (`solve` does so before
+        // planning); a failure here means the problem changed since, and yields no path.
+        let Ok(encodings) = self.encodings(problem) else {
+            return PlannerOutput {
+                paths: vec![Vec::new(); problem.missions.len()],
+                claim: None,
+                stats: SearchStats::default(),
+            };
+        };
+        let objective = PathObjective::new(problem, encodings);
+        let seeds: Vec<Vec<f64>> = options.init.and_then(|p| objective.encode(p)).into_iter().collect();
+        let r = optim::run(self.optimizer.as_mut(), &objective, termination, rng, options.parallel, &seeds, observer);
+        PlannerOutput {
+            paths: objective.decode(&r.best_x),
+            claim: None,
+            stats: SearchStats {
+                iterations: r.iterations,
+                evaluations: r.evaluations,
+                history: r.history,
+                stop_reason: r.stop_reason,
+                elapsed: r.elapsed,
+                ..SearchStats::default()
+            },
         }
     }
 }

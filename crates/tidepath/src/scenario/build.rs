@@ -1,15 +1,22 @@
 //! From a scenario spec to the runtime model, checking every value on the way.
 
 use super::spec::*;
-use crate::cost::{CostModel, GeneralCost, GeneralWeights};
-use crate::encoding::{Encoding, FreeWaypoints, Sliced};
+use crate::cost::{self, CostModel};
+use crate::encoding::{self, Encoding, EncodingArgs};
 use crate::error::{Error, Result};
 use crate::geom::{Aabb, Vec2, Vec3};
+use crate::mission::Mission;
 use crate::path::{ModelSettings, PathModel};
+use crate::planner::Problem;
 use crate::vehicle::Vehicle;
 use crate::world::current::{CurrentGrid, LambOseen};
 use crate::world::terrain::{ElevationGrid, GaussianPeaks, Peak};
-use crate::world::{Current, Dims, Obstacle, RegularGrid2, Shape, Terrain, WaveField, World};
+use crate::world::{Current, Dims, Obstacle, RegularGrid2, Shape, Terrain, World};
+
+/// Most missions a scenario may hold: a fleet, not a swarm; each is planned jointly.
+pub const MAX_MISSIONS: usize = 64;
+/// Most obstacles a scenario may hold; each segment test scales with them.
+pub const MAX_OBSTACLES: usize = 4096;
 
 /// A checked scenario, ready to plan on.
 #[derive(Clone, Debug)]
@@ -19,7 +26,11 @@ pub struct Scenario {
     /// Where it came from: `builtin:NAME` or a file path.
     pub source: String,
     pub world: World,
+    /// The scenario's `[vehicle]`, which every mission uses unless it gives its own.
     pub vehicle: Vehicle,
+    /// One or more missions (a fleet).
+    pub missions: Vec<Mission>,
+    /// The first mission's start, goal and departure, for figures and single-mission callers.
     pub start: Vec3,
     pub goal: Vec3,
     pub departure_time: f64,
@@ -29,6 +40,8 @@ pub struct Scenario {
     pub planner: PlannerSpec,
     /// The spec as loaded, for reports.
     pub spec: ScenarioSpec,
+    /// Settings that were accepted but have no effect, to show the user.
+    pub warnings: Vec<String>,
 }
 
 impl Scenario {
@@ -39,35 +52,36 @@ impl Scenario {
 
     pub fn from_spec(spec: ScenarioSpec, source: &str) -> Result<Self> {
         let world = build_world(&spec.world)?;
-        let vehicle = build_vehicle(&spec.vehicle)?;
-        let start = Vec3::from_array(spec.mission.start);
-        let goal = Vec3::from_array(spec.mission.goal);
+        let vehicle = build_vehicle(&spec.vehicle, "vehicle")?;
+        let mut warnings = legacy_warnings(&spec.vehicle, "vehicle");
+        let missions = build_missions(&spec, &vehicle, &world, &mut warnings)?;
         let settings = build_settings(&spec.model, &world)?;
-        let departure_time = spec.mission.departure_time;
-        check_endpoint("mission.start", start, &world, &vehicle, departure_time)?;
-        check_endpoint("mission.goal", goal, &world, &vehicle, departure_time)?;
+        let first = missions[0].clone();
         let scenario = Self {
             name: spec.name.clone(),
             description: spec.description.clone(),
             source: source.to_string(),
             world,
             vehicle,
-            start,
-            goal,
-            departure_time,
+            missions,
+            start: first.start,
+            goal: first.goal,
+            departure_time: first.departure_time,
             settings,
             cost: spec.cost.clone(),
             encoding: spec.encoding.clone(),
             planner: spec.planner.clone(),
             spec,
+            warnings,
         };
         // Build once so configuration errors surface at load time, not mid-run.
         scenario.cost_model()?;
         scenario.build_encoding()?;
         let planner = &scenario.planner;
-        crate::planner::build_planner(&planner.id, planner.params.get(&planner.id), planner.population)?;
+        let registry = crate::planner::registry();
+        registry.build(&planner.id, planner.params.get(&planner.id), planner.population, &scenario.encoding)?;
         for (id, table) in &planner.params {
-            crate::planner::build_planner(id, Some(table), planner.population)?;
+            registry.build(id, Some(table), planner.population, &scenario.encoding)?;
         }
         if let Some(id) = planner.smoother.as_deref().filter(|s| *s != "none") {
             crate::smoothing::build_smoother(id)?;
@@ -75,37 +89,119 @@ impl Scenario {
         Ok(scenario)
     }
 
+    /// The path evaluation of the first mission.
     pub fn path_model(&self) -> PathModel<'_> {
-        PathModel::new(&self.world, &self.vehicle, self.departure_time, &self.settings)
+        PathModel::new(&self.world, &self.missions[0], &self.settings)
+    }
+
+    /// The path evaluation of mission `i`.
+    pub fn mission_model(&self, i: usize) -> PathModel<'_> {
+        PathModel::new(&self.world, &self.missions[i], &self.settings)
+    }
+
+    /// The planning problem: this world, `cost`, and every mission.
+    pub fn problem<'a>(&'a self, cost: &'a dyn CostModel) -> Problem<'a> {
+        Problem { world: &self.world, settings: &self.settings, cost, missions: &self.missions }
     }
 
     pub fn cost_model(&self) -> Result<Box<dyn CostModel>> {
-        match self.cost.model.as_str() {
-            "general" => {
-                let weights: GeneralWeights =
-                    super::from_value(toml::Value::Table(self.cost.weights.clone()), "cost.weights")?;
-                Ok(Box::new(GeneralCost::new(weights, self.start, self.goal, self.vehicle.speed)?))
-            }
-            other => Err(Error::input("cost.model", format!("unknown cost model '{other}' (known: general)"))),
-        }
+        (cost::registry().get(&self.cost.model)?.build)(&self.cost.weights)
     }
 
-    /// The height band a 3-D encoding may use, or `None` in a 2-D world.
+    /// The height band a 3-D encoding may use, or `None` in a 2-D world (first mission).
     pub fn z_range(&self) -> Option<(f64, f64)> {
         (self.world.dims == Dims::Three).then(|| {
             (self.world.bounds.min.z.max(self.vehicle.z_min()), self.world.bounds.max.z.min(self.vehicle.z_max()))
         })
     }
 
+    /// The `[encoding]` of the first mission (every mission's is checked by the planners).
     pub fn build_encoding(&self) -> Result<Box<dyn Encoding>> {
+        let build = encoding::registry().get(&self.encoding.kind)?.build;
         let n = self.encoding.waypoints;
-        let b = &self.world.bounds;
-        match self.encoding.kind.as_str() {
-            "sliced" => Ok(Box::new(Sliced::new(self.start, self.goal, n, b, self.z_range())?)),
-            "free" => Ok(Box::new(FreeWaypoints::new(self.start, self.goal, n, b, self.z_range())?)),
-            other => Err(Error::input("encoding.kind", format!("unknown encoding '{other}' (known: sliced, free)"))),
+        if n > MAX_WAYPOINTS {
+            return Err(Error::input("encoding.waypoints", format!("must be at most {MAX_WAYPOINTS}, got {n}")));
+        }
+        build(&EncodingArgs {
+            start: self.start,
+            goal: self.goal,
+            waypoints: n,
+            bounds: &self.world.bounds,
+            z_range: self.z_range(),
+        })
+    }
+}
+
+/// Most interior waypoints an encoding may have.
+pub const MAX_WAYPOINTS: usize = 10_000;
+
+fn build_missions(
+    spec: &ScenarioSpec,
+    vehicle: &Vehicle,
+    world: &World,
+    warnings: &mut Vec<String>,
+) -> Result<Vec<Mission>> {
+    let mut out = Vec::new();
+    match (&spec.mission, spec.missions.is_empty()) {
+        (Some(_), false) => {
+            return Err(Error::input("missions", "give either [mission] or [[missions]], not both"));
+        }
+        (None, true) => return Err(Error::input("mission", "missing: give [mission] or [[missions]]")),
+        (Some(m), true) => {
+            let start = Vec3::from_array(m.start);
+            let goal = Vec3::from_array(m.goal);
+            check_endpoint("mission.start", start, world)?;
+            check_endpoint("mission.goal", goal, world)?;
+            check_time("mission.departure_time", m.departure_time)?;
+            out.push(Mission::new("mission", vehicle.clone(), start, goal, m.departure_time));
+        }
+        (None, false) => {
+            if spec.missions.len() > MAX_MISSIONS {
+                return Err(Error::input(
+                    "missions",
+                    format!("at most {MAX_MISSIONS} missions, got {}", spec.missions.len()),
+                ));
+            }
+            for (i, m) in spec.missions.iter().enumerate() {
+                let field = |f: &str| format!("missions[{i}].{f}");
+                if out.iter().any(|o: &Mission| o.name == m.name) {
+                    return Err(Error::input(field("name"), format!("'{}' is used twice", m.name)));
+                }
+                let v = match &m.vehicle {
+                    Some(vs) => {
+                        warnings.extend(legacy_warnings(vs, &field("vehicle")));
+                        build_vehicle(vs, &field("vehicle"))?
+                    }
+                    None => vehicle.clone(),
+                };
+                let (start, goal) = (Vec3::from_array(m.start), Vec3::from_array(m.goal));
+                check_endpoint(&field("start"), start, world)?;
+                check_endpoint(&field("goal"), goal, world)?;
+                check_time(&field("departure_time"), m.departure_time)?;
+                out.push(Mission::new(m.name.clone(), v, start, goal, m.departure_time));
+            }
         }
     }
+    Ok(out)
+}
+
+/// Departure times are seconds on the scenario clock; beyond a century they are a typo and the
+/// clock loses sub-millisecond precision.
+pub const MAX_TIME_S: f64 = 3.2e9;
+
+fn check_time(field: &str, t: f64) -> Result<()> {
+    if t.is_nan() || t.abs() > MAX_TIME_S {
+        return Err(Error::input(field, format!("must be within +-{MAX_TIME_S} s (about a century), got {t:?}")));
+    }
+    Ok(())
+}
+
+fn legacy_warnings(v: &VehicleSpec, field: &str) -> Vec<String> {
+    [("speed_min", v.speed_min), ("speed_max", v.speed_max), ("turn_radius", v.turn_radius)]
+        .into_iter()
+        .filter(|(_, x)| x.is_some())
+        .map(|(name, _)| format!("{field}.{name} is accepted for older files but no planner uses it yet; ignored"))
+        .collect()
 }
 
 fn finite_positive(field: &str, v: f64) -> Result<f64> {
@@ -132,16 +228,15 @@ fn build_world(spec: &WorldSpec) -> Result<World> {
     }
     let bounds = Aabb::new(min, max);
     let terrain = build_terrain(&spec.terrain)?;
+    if spec.obstacles.len() > MAX_OBSTACLES {
+        return Err(Error::input(
+            "world.obstacles",
+            format!("at most {MAX_OBSTACLES} obstacles, got {}", spec.obstacles.len()),
+        ));
+    }
     let obstacles = spec.obstacles.iter().enumerate().map(|(i, o)| build_obstacle(i, o)).collect::<Result<Vec<_>>>()?;
     let current = build_current(&spec.current, &bounds)?;
-    let waves = match &spec.waves {
-        None => None,
-        Some(w) => {
-            let grid = grid2("world.waves", w.origin, w.spacing, w.shape)?;
-            Some(WaveField::new(grid, w.heights.clone(), "world.waves")?)
-        }
-    };
-    Ok(World { bounds, dims, terrain, obstacles, current, waves })
+    Ok(World { bounds, dims, terrain, obstacles, current })
 }
 
 fn grid2(field: &str, origin: P2, spacing: P2, shape: [usize; 2]) -> Result<RegularGrid2> {
@@ -220,36 +315,27 @@ fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
     })
 }
 
-fn build_vehicle(s: &VehicleSpec) -> Result<Vehicle> {
-    finite_positive("vehicle.speed", s.speed)?;
-    if !(s.speed_min >= 0.0 && s.speed_min <= s.speed && s.speed <= s.speed_max) {
-        return Err(Error::input(
-            "vehicle.speed",
-            format!("must lie in [speed_min, speed_max], got {} not in [{}, {}]", s.speed, s.speed_min, s.speed_max),
-        ));
+fn build_vehicle(s: &VehicleSpec, at: &str) -> Result<Vehicle> {
+    finite_positive(&format!("{at}.speed"), s.speed)?;
+    if s.speed > MAX_SPEED {
+        return Err(Error::input(format!("{at}.speed"), format!("must be at most {MAX_SPEED} m/s, got {}", s.speed)));
     }
-    if s.turn_radius < 0.0 {
-        return Err(Error::input("vehicle.turn_radius", format!("must be >= 0, got {}", s.turn_radius)));
-    }
-    for (name, v) in [("max_turn_deg", s.max_turn_deg), ("max_pitch_deg", s.max_pitch_deg)] {
-        if !(v > 0.0 && v <= 180.0) {
-            return Err(Error::input(format!("vehicle.{name}"), format!("must be in (0, 180], got {v}")));
+    for (name, v, max) in [("max_turn_deg", s.max_turn_deg, 180.0), ("max_pitch_deg", s.max_pitch_deg, 90.0)] {
+        if !(v > 0.0 && v <= max) {
+            return Err(Error::input(format!("{at}.{name}"), format!("must be in (0, {max}], got {v}")));
         }
     }
     if !(s.depth_min >= 0.0 && s.depth_min <= s.depth_max) {
         return Err(Error::input(
-            "vehicle.depth_min",
+            format!("{at}.depth_min"),
             format!("must satisfy 0 <= depth_min <= depth_max, got {} and {}", s.depth_min, s.depth_max),
         ));
     }
     if s.safety_distance < 0.0 {
-        return Err(Error::input("vehicle.safety_distance", format!("must be >= 0, got {}", s.safety_distance)));
+        return Err(Error::input(format!("{at}.safety_distance"), format!("must be >= 0, got {}", s.safety_distance)));
     }
     Ok(Vehicle {
         speed: s.speed,
-        speed_min: s.speed_min,
-        speed_max: s.speed_max,
-        turn_radius: s.turn_radius,
         max_turn: s.max_turn_deg.to_radians(),
         max_pitch: s.max_pitch_deg.to_radians(),
         depth_min: s.depth_min,
@@ -268,8 +354,13 @@ fn build_settings(spec: &ModelSpec, world: &World) -> Result<ModelSettings> {
     Ok(ModelSettings { travel: spec.travel_time, current_step })
 }
 
-/// Start and goal must lie in the domain and depth band, clear of the seabed and obstacles.
-fn check_endpoint(field: &str, p: Vec3, world: &World, veh: &Vehicle, t: f64) -> Result<()> {
+/// Fastest vehicle accepted (m/s): faster than any marine robot, slow enough that the clock
+/// stays meaningful.
+pub const MAX_SPEED: f64 = 100.0;
+
+/// Start and goal must lie in the domain: a point outside it is a typo (exit 2). Whether it
+/// lies in the seabed or an obstacle is the plan's status (`invalid-start`, `invalid-goal`).
+fn check_endpoint(field: &str, p: Vec3, world: &World) -> Result<()> {
     let shown = format!("[{}, {}, {}]", p.x, p.y, p.z);
     if !world.bounds.contains(p) {
         let (lo, hi) = (world.bounds.min, world.bounds.max);
@@ -277,26 +368,6 @@ fn check_endpoint(field: &str, p: Vec3, world: &World, veh: &Vehicle, t: f64) ->
             field,
             format!("{shown} is outside the domain [{}, {}, {}] .. [{}, {}, {}]", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z),
         ));
-    }
-    if world.dims == Dims::Three && (p.z > veh.z_max() || p.z < veh.z_min()) {
-        return Err(Error::input(
-            field,
-            format!("{shown} is outside the vehicle's depth band [{}, {}] m", veh.depth_min, veh.depth_max),
-        ));
-    }
-    let seabed = world.terrain.elevation(p.x, p.y);
-    if p.z < seabed + veh.safety_distance {
-        let what = if p.z < seabed { "below the seabed" } else { "within the safety distance of the seabed" };
-        return Err(Error::input(
-            field,
-            format!("{shown} is {what} (seabed at {seabed:.1} m, safety distance {} m)", veh.safety_distance),
-        ));
-    }
-    for (k, o) in world.obstacles.iter().enumerate() {
-        if o.contains(p, t, veh.safety_distance) {
-            let what = if o.contains(p, t, 0.0) { "inside" } else { "within the safety distance of" };
-            return Err(Error::input(field, format!("{shown} is {what} obstacle {k} (world.obstacles[{k}])")));
-        }
     }
     Ok(())
 }

@@ -23,7 +23,7 @@ mod tests {
             let s = Scenario::from_toml(text, name).unwrap_or_else(|e| panic!("{name}: {e}"));
             let req = PlanRequest { iterations: Some(3), ..PlanRequest::default() };
             let r = s.plan(&req, &mut |_| {}).unwrap_or_else(|e| panic!("{name}: {e}"));
-            assert_eq!(r.waypoints.len(), s.encoding.waypoints + 2, "{name}");
+            assert_eq!(r.missions[0].waypoints.len(), s.encoding.waypoints + 2, "{name}");
         }
     }
 }

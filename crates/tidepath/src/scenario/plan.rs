@@ -1,17 +1,37 @@
 //! Planning and evaluating on a scenario: the entry points the CLI and the experiment runner
 //! share, so `plan`, `eval` and `compare` report the same numbers.
 
-use std::time::Duration;
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 
 use super::Scenario;
 use crate::error::{Error, Result};
 use crate::geom::Vec3;
-use crate::io::PlanReport;
-use crate::optim::{Budget, Progress};
-use crate::path::{Metrics, Violation};
-use crate::planner::{build_planner, Problem};
+use crate::io::{PlanAbout, PlanReport};
+use crate::optim::Progress;
+use crate::planner::{self, registry::BuildPlanner, MissionPlan, RunOptions, SolveOptions};
+use crate::registry::Registry;
 use crate::rng::run_rng;
 use crate::smoothing::build_smoother;
+use crate::termination::{check_count, check_wall_time, Termination};
+
+/// The wall-time cap (s) every run gets when neither the command line nor the scenario sets a
+/// limit, so no command runs forever. `TIDEPATH_DEFAULT_TIME_LIMIT` (seconds) changes it.
+pub const DEFAULT_TIME_LIMIT_S: f64 = 600.0;
+
+/// The default cap in force: [`DEFAULT_TIME_LIMIT_S`] or the environment's override.
+pub fn default_time_limit_s() -> Result<f64> {
+    match std::env::var("TIDEPATH_DEFAULT_TIME_LIMIT") {
+        Ok(v) => {
+            let s: f64 = v.trim().parse().map_err(|_| {
+                Error::input("TIDEPATH_DEFAULT_TIME_LIMIT", format!("'{v}' is not a number of seconds"))
+            })?;
+            check_wall_time("TIDEPATH_DEFAULT_TIME_LIMIT", s)?;
+            Ok(s)
+        }
+        Err(_) => Ok(DEFAULT_TIME_LIMIT_S),
+    }
+}
 
 /// How to run one plan; `None` fields fall back to the scenario's `[planner]` section.
 #[derive(Clone, Debug, Default)]
@@ -28,105 +48,119 @@ pub struct PlanRequest {
     pub parallel: bool,
     /// Smoother id; `None` uses the scenario's `[planner] smoother`, `Some("none")` disables it.
     pub smoother: Option<String>,
+    /// A path per mission to start from (`plan --init`).
+    pub init: Option<Vec<Vec<Vec3>>>,
+    /// Raised by the caller to stop the run (Ctrl-C).
+    pub stop: Option<Arc<AtomicBool>>,
 }
 
-/// A path judged against the scenario.
-#[derive(Clone, Debug)]
-pub struct Evaluation {
-    pub cost: f64,
-    pub terms: Vec<(&'static str, f64)>,
-    pub feasible: bool,
-    pub violations: Vec<Violation>,
-    pub metrics: Metrics,
+/// Where the wall-time limit of a run came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LimitSource {
+    CommandLine,
+    Scenario,
+    DefaultCap,
 }
 
 impl Scenario {
-    /// The budget for a request: explicit limits win; with none given, the scenario's.
-    pub fn budget(&self, req: &PlanRequest) -> Result<Budget> {
+    /// The termination for a request: explicit limits win; with none given, the scenario's;
+    /// with no wall time anywhere, the default cap. Every value is checked and an error names
+    /// the flag or field it came from.
+    pub fn termination(&self, req: &PlanRequest) -> Result<(Termination, LimitSource)> {
         let explicit = req.iterations.is_some() || req.evaluations.is_some();
         let (iters, evals) = if explicit {
             (req.iterations, req.evaluations)
         } else {
             (self.planner.iterations, self.planner.evaluations)
         };
-        let (time, time_field) = match req.time_limit_s {
-            Some(t) => (Some(t), "--time-limit"),
-            None => (self.planner.time_limit_s, "planner.time_limit_s"),
-        };
-        let time = match time {
-            None => None,
-            Some(t) if t > 0.0 && t.is_finite() => Some(Duration::from_secs_f64(t)),
-            Some(t) => return Err(Error::input(time_field, format!("must be positive and finite, got {t}"))),
-        };
         let source = if explicit { "--" } else { "planner." };
-        if iters == Some(0) {
-            return Err(Error::input(format!("{source}iterations"), "must be at least 1, got 0"));
-        }
-        if evals == Some(0) {
-            return Err(Error::input(format!("{source}evaluations"), "must be at least 1, got 0"));
-        }
-        Ok(Budget { max_iterations: iters, max_evaluations: evals, max_time: time })
+        let count = |name: &str, v: Option<u64>| v.map(|v| check_count(&format!("{source}{name}"), v)).transpose();
+        let (time, limit_source) = match (req.time_limit_s, self.planner.time_limit_s) {
+            (Some(t), _) => (check_wall_time("--time-limit", t)?, LimitSource::CommandLine),
+            (None, Some(t)) => (check_wall_time("planner.time_limit_s", t)?, LimitSource::Scenario),
+            (None, None) => (check_wall_time("default time limit", default_time_limit_s()?)?, LimitSource::DefaultCap),
+        };
+        let mut t = Termination {
+            max_iterations: count("iterations", iters)?,
+            max_evaluations: count("evaluations", evals)?,
+            wall_time: Some(time),
+            ..Termination::default()
+        };
+        t.stop = req.stop.clone();
+        Ok((t, limit_source))
     }
 
-    /// Runs one plan and judges the result.
+    /// Runs one plan with the built-in planners and judges the result.
     pub fn plan(&self, req: &PlanRequest, observer: &mut dyn FnMut(&Progress)) -> Result<PlanReport> {
+        self.plan_with(&planner::registry(), req, observer)
+    }
+
+    /// Runs one plan with a planner from `planners` (the built-in table, possibly extended).
+    pub fn plan_with(
+        &self,
+        planners: &Registry<BuildPlanner>,
+        req: &PlanRequest,
+        observer: &mut dyn FnMut(&Progress),
+    ) -> Result<PlanReport> {
         let id = req.planner.clone().unwrap_or_else(|| self.planner.id.clone());
         let population = req.population.or(self.planner.population);
-        let mut planner = build_planner(&id, self.planner.params.get(&id), population)?;
-        let budget = self.budget(req)?;
+        let mut planner = planners.build(&id, self.planner.params.get(&id), population, &self.encoding)?;
+        let (termination, limit_source) = self.termination(req)?;
         let cost = self.cost_model()?;
-        let encoding = self.build_encoding()?;
-        let problem = Problem {
-            model: self.path_model(),
-            cost: cost.as_ref(),
-            encoding: encoding.as_ref(),
-            start: self.start,
-            goal: self.goal,
-        };
         let smoother = match req.smoother.as_deref().or(self.planner.smoother.as_deref()) {
             None | Some("none") => None,
             Some(id) => Some(build_smoother(id)?),
         };
-        let outcome = planner.plan(&problem, &budget, run_rng(req.seed, req.run), req.parallel, observer);
-        let smoothed = smoother.map(|s| s.smooth(&problem.model, cost.as_ref(), &outcome.waypoints));
-        let raw_cost = smoothed.as_ref().map(|_| outcome.cost);
-        let eval = self.evaluate(smoothed.as_deref().unwrap_or(&outcome.waypoints))?;
-        Ok(PlanReport {
-            tidepath_version: env!("CARGO_PKG_VERSION").to_string(),
-            planner: id,
+        if let Some(init) = &req.init {
+            if init.len() != self.missions.len() {
+                return Err(Error::input(
+                    "--init",
+                    format!(
+                        "the plan has {} path(s); this scenario has {} mission(s)",
+                        init.len(),
+                        self.missions.len()
+                    ),
+                ));
+            }
+        }
+        let problem = self.problem(cost.as_ref());
+        let options = SolveOptions {
+            run: RunOptions { init: req.init.as_deref(), parallel: req.parallel },
+            smoother: smoother.as_deref(),
+        };
+        let mut rng = run_rng(req.seed, req.run);
+        let plan = planner::solve(planner.as_mut(), &problem, &termination, &mut rng, options, observer)?;
+        let about = PlanAbout {
             seed: req.seed,
             scenario: self.name.clone(),
             scenario_source: self.source.clone(),
             cost_model: cost.id().to_string(),
             travel_time_model: self.settings.travel.id().to_string(),
-            waypoints: outcome.waypoints.iter().map(|p| p.to_array()).collect(),
-            smoothed: smoothed.map(|p| p.iter().map(|q| q.to_array()).collect()),
-            raw_cost,
-            cost: eval.cost,
-            cost_terms: eval.terms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect(),
-            feasible: eval.feasible,
-            violations: eval.violations,
-            metrics: eval.metrics,
-            evaluations: outcome.evaluations,
-            iterations: outcome.iterations,
-            stop_reason: outcome.stop_reason,
-            elapsed_s: outcome.elapsed.as_secs_f64(),
-            history: outcome.history.iter().map(|h| h.is_finite().then_some(*h)).collect(),
-        })
+            time_limit_s: termination.wall_time.map(|d| d.as_secs_f64()),
+            default_time_cap: limit_source == LimitSource::DefaultCap,
+        };
+        Ok(PlanReport::new(&plan, about))
     }
 
-    /// Cost, terms, feasibility and metrics of a path (start and goal included).
-    pub fn evaluate(&self, points: &[Vec3]) -> Result<Evaluation> {
+    /// Judges one path per mission (start and goal included).
+    pub fn evaluate_paths(&self, paths: &[Vec<Vec3>]) -> Result<Vec<MissionPlan>> {
+        if paths.len() != self.missions.len() {
+            return Err(Error::input(
+                "plan",
+                format!("the plan has {} path(s); this scenario has {} mission(s)", paths.len(), self.missions.len()),
+            ));
+        }
         let cost = self.cost_model()?;
-        let model = self.path_model();
-        let (total, terms) = cost.breakdown(&model, points);
-        let violations = model.violations(points);
-        Ok(Evaluation {
-            cost: total,
-            terms,
-            feasible: violations.is_empty(),
-            violations,
-            metrics: model.metrics(points),
-        })
+        Ok(paths
+            .iter()
+            .enumerate()
+            .map(|(i, p)| planner::solve::judge(&self.mission_model(i), cost.as_ref(), p, &self.missions[i].name))
+            .collect())
+    }
+
+    /// Judges a path of the first mission.
+    pub fn evaluate(&self, points: &[Vec3]) -> Result<MissionPlan> {
+        let cost = self.cost_model()?;
+        Ok(planner::solve::judge(&self.path_model(), cost.as_ref(), points, &self.missions[0].name))
     }
 }

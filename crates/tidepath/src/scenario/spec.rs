@@ -8,6 +8,8 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
+pub use crate::encoding::EncodingSpec;
+
 pub type P3 = [f64; 3];
 pub type P2 = [f64; 2];
 
@@ -20,7 +22,11 @@ pub struct ScenarioSpec {
     pub world: WorldSpec,
     #[serde(default)]
     pub vehicle: VehicleSpec,
-    pub mission: MissionSpec,
+    /// One mission (`[mission]`), or a fleet (`[[missions]]`): exactly one of the two.
+    #[serde(default)]
+    pub mission: Option<MissionSpec>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub missions: Vec<FleetMissionSpec>,
     #[serde(default)]
     pub model: ModelSpec,
     #[serde(default)]
@@ -44,8 +50,6 @@ pub struct WorldSpec {
     pub obstacles: Vec<ObstacleSpec>,
     #[serde(default)]
     pub current: CurrentSpec,
-    #[serde(default)]
-    pub waves: Option<GridFieldSpec>,
 }
 
 fn three() -> u8 {
@@ -191,23 +195,19 @@ pub struct JetSpec {
     pub jet_y: Option<[f64; 2]>,
 }
 
-#[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct GridFieldSpec {
-    pub origin: P2,
-    pub spacing: P2,
-    pub shape: [usize; 2],
-    pub heights: Vec<f64>,
-}
-
 /// Vehicle limits; every field has a default (a generic 1.5 m/s survey AUV).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct VehicleSpec {
     pub speed: f64,
-    pub speed_min: f64,
-    pub speed_max: f64,
-    pub turn_radius: f64,
+    /// Accepted so files written for earlier versions still load; no planner reads them yet
+    /// (speed choice and Dubins turns come with the wpa2017 planners). Loading warns.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speed_min: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speed_max: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub turn_radius: Option<f64>,
     pub max_turn_deg: f64,
     pub max_pitch_deg: f64,
     pub depth_min: f64,
@@ -220,9 +220,9 @@ impl Default for VehicleSpec {
         let v = crate::vehicle::Vehicle::default();
         Self {
             speed: v.speed,
-            speed_min: v.speed_min,
-            speed_max: v.speed_max,
-            turn_radius: v.turn_radius,
+            speed_min: None,
+            speed_max: None,
+            turn_radius: None,
             max_turn_deg: v.max_turn.to_degrees(),
             max_pitch_deg: v.max_pitch.to_degrees(),
             depth_min: v.depth_min,
@@ -241,10 +241,24 @@ pub struct MissionSpec {
     pub departure_time: f64,
 }
 
+/// One vehicle of a fleet: its own mission and, optionally, its own vehicle limits (else the
+/// scenario's `[vehicle]`).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FleetMissionSpec {
+    pub name: String,
+    pub start: P3,
+    pub goal: P3,
+    #[serde(default)]
+    pub departure_time: f64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vehicle: Option<VehicleSpec>,
+}
+
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct ModelSpec {
-    /// "crab" (default) or "vector-sum" (seed 003 eq. 17).
+    /// "crab" (default) or "vector-sum" (ijs2023 eq. 17).
     pub travel_time: crate::path::TravelModel,
     /// Longest sub-step (m) for integrating travel time through the current.
     pub current_step: Option<f64>,
@@ -267,21 +281,6 @@ pub struct CostSpec {
 impl Default for CostSpec {
     fn default() -> Self {
         Self { model: "general".into(), weights: toml::Table::new() }
-    }
-}
-
-#[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct EncodingSpec {
-    /// "sliced" or "free".
-    pub kind: String,
-    /// Interior waypoints (start and goal come on top).
-    pub waypoints: usize,
-}
-
-impl Default for EncodingSpec {
-    fn default() -> Self {
-        Self { kind: "sliced".into(), waypoints: 20 }
     }
 }
 

@@ -1,15 +1,16 @@
 //! Smoothing and repair operators: components any planner's output can go through, as in
-//! OMPL's `PathSimplifier`. The paper-specific ones (Dubins for seed 000, B-splines with
-//! midpoint insertion for seed 003, excluding and contracting for seed 002) join this folder.
+//! OMPL's `PathSimplifier`. The paper-specific ones (Dubins for wpa2017, B-splines with
+//! midpoint insertion for ijs2023, excluding and contracting for amfa2015) join this folder.
 
 pub mod shortcut;
 
 pub use shortcut::Shortcut;
 
 use crate::cost::CostModel;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::geom::Vec3;
 use crate::path::PathModel;
+use crate::registry::{no_params, Entry, Registry};
 
 pub trait Smoother: Send + Sync {
     /// The id used on the command line and in scenarios.
@@ -19,18 +20,22 @@ pub trait Smoother: Send + Sync {
     fn smooth(&self, model: &PathModel<'_>, cost: &dyn CostModel, points: &[Vec3]) -> Vec<Vec3>;
 }
 
-/// Smoother ids and their one-line descriptions.
-pub const SMOOTHERS: &[(&str, &str)] = &[("shortcut", "drop waypoints whose bypass is feasible and no costlier")];
+pub type BuildSmoother = fn() -> Box<dyn Smoother>;
+
+/// The smoothers, selected by `--smooth` or `[planner] smoother`.
+pub const SMOOTHERS: &[Entry<BuildSmoother>] = &[Entry {
+    id: "shortcut",
+    description: "drop waypoints whose bypass is feasible and no costlier",
+    citation: "tidepath (the deterministic form of OMPL's PathSimplifier::reduceVertices)",
+    params: &[],
+    defaults: no_params,
+    build: || Box::new(Shortcut),
+}];
+
+pub fn registry() -> Registry<BuildSmoother> {
+    Registry::new("smoother", "smoother", "tidepath planners", SMOOTHERS)
+}
 
 pub fn build_smoother(id: &str) -> Result<Box<dyn Smoother>> {
-    match id {
-        "shortcut" => Ok(Box::new(Shortcut)),
-        other => Err(Error::input(
-            "smoother",
-            format!(
-                "unknown smoother '{other}' (known: {})",
-                SMOOTHERS.iter().map(|(id, _)| *id).collect::<Vec<_>>().join(", ")
-            ),
-        )),
-    }
+    Ok((registry().get(id)?.build)())
 }

@@ -52,6 +52,7 @@ mod tests {
     use super::*;
     use crate::cost::{GeneralCost, GeneralWeights};
     use crate::geom::Aabb;
+    use crate::mission::Mission;
     use crate::path::ModelSettings;
     use crate::vehicle::Vehicle;
     use crate::world::{Obstacle, Shape, World};
@@ -65,10 +66,11 @@ mod tests {
     #[test]
     fn zigzag_in_open_water_becomes_straight() {
         let (w, v, s) = setup();
-        let m = PathModel::new(&w, &v, 0.0, &s);
         let p: Vec<Vec3> =
             (0..=10).map(|i| Vec3::new(i as f64 * 9.0, 50.0 + if i % 2 == 1 { 5.0 } else { 0.0 }, -50.0)).collect();
-        let cost = GeneralCost::new(GeneralWeights::default(), p[0], p[10], v.speed).unwrap();
+        let mission = Mission::new("m", v, p[0], p[10], 0.0);
+        let m = PathModel::new(&w, &mission, &s);
+        let cost = GeneralCost::new(GeneralWeights::default()).unwrap();
         let out = Shortcut.smooth(&m, &cost, &p);
         assert_eq!(out, vec![p[0], p[10]]);
     }
@@ -77,7 +79,6 @@ mod tests {
     fn keeps_the_detour_around_an_obstacle() {
         let (mut w, v, s) = setup();
         w.obstacles.push(Obstacle::fixed(Shape::Sphere { center: Vec3::new(50.0, 50.0, -50.0), radius: 10.0 }));
-        let m = PathModel::new(&w, &v, 0.0, &s);
         let p = vec![
             Vec3::new(10.0, 50.0, -50.0),
             Vec3::new(30.0, 70.0, -50.0),
@@ -85,7 +86,9 @@ mod tests {
             Vec3::new(70.0, 70.0, -50.0),
             Vec3::new(90.0, 50.0, -50.0),
         ];
-        let cost = GeneralCost::new(GeneralWeights::default(), p[0], p[4], v.speed).unwrap();
+        let mission = Mission::new("m", v, p[0], p[4], 0.0);
+        let m = PathModel::new(&w, &mission, &s);
+        let cost = GeneralCost::new(GeneralWeights::default()).unwrap();
         let before = cost.cost(&m, &p, &mut Scratch::default());
         let out = Shortcut.smooth(&m, &cost, &p);
         let mut times = Vec::new();

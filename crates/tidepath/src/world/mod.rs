@@ -1,4 +1,4 @@
-//! The world the robot moves through: domain, seabed, obstacles, currents and waves.
+//! The world the robot moves through: domain, seabed, obstacles and currents.
 //!
 //! The world answers questions (elevation at a point, current at a point and time, does a
 //! segment traversed between two times touch the seabed or an obstacle) and knows nothing about
@@ -10,13 +10,11 @@ pub mod grid;
 pub mod obstacle;
 pub mod query;
 pub mod terrain;
-pub mod waves;
 
 pub use current::Current;
 pub use grid::RegularGrid2;
 pub use obstacle::{Obstacle, Shape};
 pub use terrain::Terrain;
-pub use waves::WaveField;
 
 use crate::geom::Aabb;
 
@@ -38,19 +36,11 @@ pub struct World {
     pub terrain: Terrain,
     pub obstacles: Vec<Obstacle>,
     pub current: Current,
-    pub waves: Option<WaveField>,
 }
 
 impl World {
     /// An empty 3-D box: no seabed, no obstacles, still water.
     pub fn open(bounds: Aabb) -> Self {
-        Self {
-            bounds,
-            dims: Dims::Three,
-            terrain: Terrain::None,
-            obstacles: Vec::new(),
-            current: Current::None,
-            waves: None,
-        }
+        Self { bounds, dims: Dims::Three, terrain: Terrain::None, obstacles: Vec::new(), current: Current::None }
     }
 }

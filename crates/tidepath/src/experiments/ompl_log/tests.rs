@@ -106,7 +106,7 @@ budget: 2 iterations
 3.375 seconds spent to collect the data
 2 enum types
 status|Unknown status|Invalid start|Invalid goal|Unrecognized goal type|Timeout|Approximate solution|Exact solution|Crash|Unknown status|Unknown status
-stop_reason|max iterations|max evaluations|wall time
+stop_reason|max iterations|max evaluations|wall time|max expansions|max samples|target cost|cancelled|completed
 2 planners
 tidepath_pso
 0 common properties

@@ -39,7 +39,8 @@ const STATUS_TIMEOUT: u8 = 4;
 const STATUS_APPROXIMATE: u8 = 5;
 const STATUS_EXACT: u8 = 6;
 
-const STOP_REASON_ENUM: &str = "stop_reason|max iterations|max evaluations|wall time";
+const STOP_REASON_ENUM: &str =
+    "stop_reason|max iterations|max evaluations|wall time|max expansions|max samples|target cost|cancelled|completed";
 
 fn stop_reason_value(reason: StopReason) -> u8 {
     // Indices into STOP_REASON_ENUM; a new variant must be added there too.
@@ -47,6 +48,11 @@ fn stop_reason_value(reason: StopReason) -> u8 {
         StopReason::MaxIterations => 0,
         StopReason::MaxEvaluations => 1,
         StopReason::WallTime => 2,
+        StopReason::MaxExpansions => 3,
+        StopReason::MaxSamples => 4,
+        StopReason::TargetCost => 5,
+        StopReason::Cancelled => 6,
+        StopReason::Completed => 7,
     }
 }
 

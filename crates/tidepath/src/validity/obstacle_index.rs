@@ -3,7 +3,8 @@
 //!
 //! The index is conservative: an obstacle is skipped for a segment only when their horizontal
 //! boxes (the obstacle's inflated by the safety margin) are apart, in which case the exact test
-//! rejects the pair anyway. Moving obstacles are always tested.
+//! rejects the pair anyway. Moving obstacles are not indexed: the validator tests them piece by
+//! piece at the vehicle's clock (see [`super::Validator::motion`]).
 
 use crate::geom::Vec3;
 use crate::world::World;
@@ -15,8 +16,10 @@ const MAX_INDEXED: usize = 256;
 
 #[derive(Clone, Debug, Default)]
 pub(crate) struct ObstacleIndex {
-    /// Obstacles tested against every segment: the moving ones, or all when not indexed.
+    /// Fixed obstacles tested against every segment when the world is too sparse to index.
     always: Vec<u32>,
+    /// Moving obstacles, in increasing index.
+    moving: Vec<u32>,
     x0: f64,
     y0: f64,
     inv_w: f64,
@@ -33,8 +36,9 @@ impl ObstacleIndex {
     pub(crate) fn new(world: &World, margin: f64) -> Self {
         let n = world.obstacles.len();
         let fixed: Vec<usize> = (0..n).filter(|&k| world.obstacles[k].velocity == Vec3::ZERO).collect();
+        let moving: Vec<u32> = (0..n as u32).filter(|&k| world.obstacles[k as usize].velocity != Vec3::ZERO).collect();
         if fixed.len() < MIN_INDEXED || n > MAX_INDEXED {
-            return Self { always: (0..n as u32).collect(), ..Self::default() };
+            return Self { always: fixed.iter().map(|&k| k as u32).collect(), moving, ..Self::default() };
         }
         let b = world.bounds;
         let side = ((fixed.len() as f64).sqrt() * 2.0).ceil().clamp(2.0, 32.0) as usize;
@@ -45,7 +49,8 @@ impl ObstacleIndex {
             (((side as f64 * w / h).ceil() as usize).max(1), side)
         };
         let mut index = Self {
-            always: (0..n as u32).filter(|&k| world.obstacles[k as usize].velocity != Vec3::ZERO).collect(),
+            always: Vec::new(),
+            moving,
             x0: b.min.x,
             y0: b.min.y,
             inv_w: nx as f64 / w,
@@ -90,8 +95,15 @@ impl ObstacleIndex {
         (i as usize, j as usize)
     }
 
-    /// Calls `f(k)` once for every obstacle k that may come near segment a-b: the moving ones,
-    /// then the indexed ones whose cells the segment's horizontal box touches, in increasing k.
+    /// The moving obstacles, in increasing index.
+    #[inline]
+    pub(crate) fn moving(&self) -> &[u32] {
+        &self.moving
+    }
+
+    /// Calls `f(k)` once for every fixed obstacle k that may come near segment a-b: all of them
+    /// in a sparse world, else the indexed ones whose cells the segment's horizontal box
+    /// touches, in increasing k.
     #[inline]
     pub(crate) fn for_each_candidate(&self, a: Vec3, b: Vec3, mut f: impl FnMut(usize)) {
         for &k in &self.always {
@@ -172,7 +184,9 @@ mod tests {
                 unique.dedup();
                 assert_eq!(unique.len(), seen.len(), "a candidate was offered twice");
                 for (k, o) in w.obstacles.iter().enumerate() {
-                    if o.segment_hits(a, b, ta, tb, margin) {
+                    if o.velocity != Vec3::ZERO {
+                        assert!(!seen.contains(&k) && index.moving().contains(&(k as u32)));
+                    } else if o.segment_hits(a, b, ta, tb, margin) {
                         assert!(seen.contains(&k), "obstacle {k} hit but skipped by the index");
                     }
                 }

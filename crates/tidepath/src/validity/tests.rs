@@ -1,0 +1,132 @@
+//! Hand-computed checks of the state and motion validators.
+
+use super::*;
+use crate::geom::Aabb;
+use crate::world::current::{CurrentGrid, LambOseen};
+use crate::world::terrain::{GaussianPeaks, Peak};
+use crate::world::{Obstacle, RegularGrid2, Shape, Terrain};
+
+fn world() -> World {
+    let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -100.0), Vec3::new(1000.0, 1000.0, 0.0)));
+    w.terrain = Terrain::Peaks(GaussianPeaks {
+        base: -90.0,
+        peaks: vec![Peak { x: 500.0, y: 500.0, height: 60.0, sigma_x: 50.0, sigma_y: 50.0 }],
+        ceiling: None,
+    });
+    w
+}
+
+fn vehicle() -> Vehicle {
+    Vehicle { speed: 2.0, safety_distance: 5.0, depth_min: 0.0, depth_max: 100.0, ..Vehicle::default() }
+}
+
+#[test]
+fn state_issues_name_what_is_wrong() {
+    let mut w = world();
+    w.obstacles.push(Obstacle::fixed(Shape::Sphere { center: Vec3::new(100.0, 100.0, -50.0), radius: 10.0 }));
+    w.obstacles.push(Obstacle {
+        shape: Shape::Sphere { center: Vec3::new(0.0, 300.0, -50.0), radius: 10.0 },
+        velocity: Vec3::new(1.0, 0.0, 0.0),
+    });
+    let (v, s) = (vehicle(), ModelSettings::default());
+    let val = Validator::new(&w, &v, &s);
+    assert_eq!(val.state(Vec3::new(200.0, 200.0, -50.0), 0.0), Ok(()));
+    assert_eq!(val.state(Vec3::new(-1.0, 200.0, -50.0), 0.0), Err(StateIssue::OutsideDomain));
+    // Seabed at -90 + 60 = -30 on the peak: -33 is 3 m below it.
+    match val.state(Vec3::new(500.0, 500.0, -33.0), 0.0) {
+        Err(StateIssue::Seabed { clearance }) => assert!((clearance + 3.0).abs() < 1e-9),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(val.state(Vec3::new(100.0, 100.0, -50.0), 0.0), Err(StateIssue::Obstacle { index: 0, inside: true }));
+    assert_eq!(val.state(Vec3::new(100.0, 113.0, -50.0), 0.0), Err(StateIssue::Obstacle { index: 0, inside: false }));
+    // The moving sphere is at x = 100 at t = 100 s, and gone at t = 0.
+    assert_eq!(val.state(Vec3::new(100.0, 300.0, -50.0), 0.0), Ok(()));
+    assert!(val.state(Vec3::new(100.0, 300.0, -50.0), 100.0).is_err());
+    assert_eq!(val.fixed_state(Vec3::new(100.0, 300.0, -50.0)), Ok(()));
+    let msg = val.describe(Vec3::new(500.0, 500.0, -33.0), StateIssue::Seabed { clearance: -3.0 });
+    assert!(msg.contains("below the seabed"), "{msg}");
+}
+
+#[test]
+fn pieces_tile_the_segment_and_sum_to_the_travel_time() {
+    let mut w = world();
+    w.current = Current::Vortices(vec![LambOseen { x: 300.0, y: 200.0, strength: 400.0, core_radius: 80.0 }]);
+    let v = vehicle();
+    let s = ModelSettings { current_step: 30.0, ..ModelSettings::default() };
+    let val = Validator::new(&w, &v, &s);
+    let (a, b) = (Vec3::new(100.0, 150.0, -60.0), Vec3::new(600.0, 260.0, -60.0));
+    let mut pieces = Vec::new();
+    let (t1, blocked) = val.for_each_piece(a, b, 10.0, |p| pieces.push(p));
+    assert_eq!(blocked, 0);
+    assert_eq!(pieces.len(), (a.distance(b) / 30.0).ceil() as usize);
+    assert_eq!(pieces[0].p0, a);
+    assert_eq!(pieces.last().unwrap().p1, b);
+    assert_eq!(pieces[0].t0, 10.0);
+    for w in pieces.windows(2) {
+        assert_eq!(w[0].p1, w[1].p0);
+        assert_eq!(w[0].t1, w[1].t0);
+    }
+    assert_eq!(pieces.last().unwrap().t1, t1);
+    assert!((val.travel_time(a, b, 10.0).0 - (t1 - 10.0)).abs() < 1e-12);
+}
+
+#[test]
+fn uniform_current_time_is_the_crab_closed_form() {
+    let mut w = world();
+    w.terrain = Terrain::None;
+    // Cross-current 1.2 with v = 2: ground speed 1.6; 800 m take 500 s.
+    w.current = Current::Uniform(Vec3::new(0.0, 1.2, 0.0));
+    let (v, s) = (vehicle(), ModelSettings::default());
+    let val = Validator::new(&w, &v, &s);
+    let m = val.motion(Vec3::new(100.0, 100.0, -50.0), Vec3::new(900.0, 100.0, -50.0), 0.0);
+    assert!(m.valid());
+    assert!((m.arrival - 500.0).abs() < 1e-9);
+    // A cross-current of 2.5 > v stops the vehicle: one blocked piece, reported as an issue.
+    w.current = Current::Uniform(Vec3::new(0.0, 2.5, 0.0));
+    let val = Validator::new(&w, &v, &s);
+    let m = val.motion(Vec3::new(100.0, 100.0, -50.0), Vec3::new(900.0, 100.0, -50.0), 0.0);
+    assert_eq!((m.blocked, m.first), (1, Some(MotionIssue::Current { pieces: 1 })));
+}
+
+/// The clock matters: a current that is fast on the first half of a segment and still on the
+/// second brings the vehicle to the far half early. A sphere moving across the track is met
+/// there at the piecewise clock; a constant-speed clock over the whole segment would put the
+/// vehicle elsewhere at that time and call the motion clear.
+#[test]
+fn moving_obstacles_are_tested_at_the_vehicle_clock() {
+    let mut w = World::open(Aabb::new(Vec3::new(0.0, -500.0, -100.0), Vec3::new(1000.0, 500.0, 0.0)));
+    // u = 2 m/s (following) for x < 500, 0 beyond, constant in time; v = 2 m/s.
+    let grid = RegularGrid2::new(0.0, -500.0, 500.0, 1000.0, 3, 2, "g").unwrap();
+    let u = vec![vec![2.0, 2.0, 0.0, 2.0, 2.0, 0.0]];
+    let vv = vec![vec![0.0; 6]];
+    w.current = Current::Grid(CurrentGrid::new(grid, vec![0.0], u, vv, "g").unwrap());
+    let (a, b) = (Vec3::new(0.0, 0.0, -50.0), Vec3::new(1000.0, 0.0, -50.0));
+    let v = Vehicle { speed: 2.0, safety_distance: 1.0, ..Vehicle::default() };
+    let s = ModelSettings { current_step: 10.0, ..ModelSettings::default() };
+    let clear = Validator::new(&w, &v, &s);
+    let at = |t: f64| {
+        let mut p = a;
+        clear.for_each_piece(a, b, 0.0, |pc| {
+            if pc.t0 <= t && t <= pc.t1 && pc.t1 > pc.t0 {
+                p = pc.p0 + (pc.p1 - pc.p0) * ((t - pc.t0) / (pc.t1 - pc.t0));
+            }
+        });
+        p
+    };
+    let (t_total, _) = clear.travel_time(a, b, 0.0);
+    let t_meet = 0.6 * t_total;
+    let where_it_is = at(t_meet);
+    let constant_speed_guess = a + (b - a) * 0.6;
+    assert!(where_it_is.distance(constant_speed_guess) > 50.0, "the test needs a clock that differs");
+    // A small sphere crossing the track (moving in y) so that it is at the vehicle at t_meet.
+    let speed = 5.0;
+    let centre0 = Vec3::new(where_it_is.x, -speed * t_meet, -50.0);
+    w.obstacles
+        .push(Obstacle { shape: Shape::Sphere { center: centre0, radius: 3.0 }, velocity: Vec3::new(0.0, speed, 0.0) });
+    let val = Validator::new(&w, &v, &s);
+    let m = val.motion(a, b, 0.0);
+    assert_eq!(m.first, Some(MotionIssue::Obstacle(0)));
+    assert!(val.motion_clearance(a, b, 0.0) < 1e-6);
+    // The constant-speed reading of the whole segment misses it.
+    assert!(!w.obstacles[0].segment_hits(a, b, 0.0, t_total, 1.0));
+}
