@@ -277,3 +277,26 @@ fn smoothed_plans_are_evaluated_as_smoothed() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("spline-magic"));
 }
+
+/// A fleet scenario: `plan` writes one timed path per mission and `eval` reports both.
+#[test]
+fn fleet_plans_and_evaluations_report_every_mission() {
+    let fleet = concat!(env!("CARGO_MANIFEST_DIR"), "/../tidepath/tests/data/fleet.toml");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("fleet.json");
+    let o = tidepath(&["plan", fleet, "--planner", "de", "--seed", "2", "--out", out.to_str().unwrap()], &[]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(matches!(o.status.code(), Some(0) | Some(1)), "{stdout} {}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains("mission auv-a") && stdout.contains("mission auv-b"), "{stdout}");
+    let plan = json(&out);
+    let missions = plan["missions"].as_array().unwrap();
+    assert_eq!(missions.len(), 2);
+    assert_eq!(missions[1]["times"][0], 600.0);
+    let o = tidepath(&["eval", fleet, out.to_str().unwrap()], &[]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(stdout.contains("mission auv-a") && stdout.contains("mission auv-b"), "{stdout}");
+    assert!(stdout.contains("relative difference 0.00e0"), "{stdout}");
+    // The fleet's plan does not fit the one-mission demo.
+    let o = tidepath(&["eval", "demo", out.to_str().unwrap()], &[]);
+    assert_eq!(o.status.code(), Some(2));
+}

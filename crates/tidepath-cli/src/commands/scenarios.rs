@@ -1,5 +1,5 @@
 use clap::Args;
-use tidepath::scenario::{builtin, builtin_names, ScenarioSpec, BUILTIN};
+use tidepath::scenario::BUILTIN;
 use tidepath::Error;
 
 use crate::Outcome;
@@ -11,20 +11,15 @@ pub struct ShowArgs {
 }
 
 pub fn list() -> Result<Outcome, Error> {
-    for (name, text) in BUILTIN {
-        let spec: ScenarioSpec = tidepath::scenario::parse_toml(text, name)?;
-        println!("{name:<12} {}", spec.description);
+    for e in BUILTIN {
+        println!("{:<12} {} [{}]", e.id, e.description, e.citation);
     }
     Ok(Outcome::Success)
 }
 
 pub fn show(args: &ShowArgs) -> Result<Outcome, Error> {
-    let text = builtin(&args.name).ok_or_else(|| {
-        Error::input(
-            "NAME",
-            format!("no built-in scenario '{}' (known: {})", args.name, builtin_names().collect::<Vec<_>>().join(", ")),
-        )
-    })?;
-    print!("{text}");
+    let mut registry = tidepath::scenario::registry();
+    registry.field = "NAME";
+    print!("{}", registry.get(&args.name)?.build);
     Ok(Outcome::Success)
 }

@@ -1,15 +1,39 @@
-//! Scenarios embedded in the binary, so a newcomer can plan without writing a file.
+//! Scenarios embedded in the binary, so a newcomer can plan without writing a file. One table
+//! entry each: the id, a line, the source of its data, and the TOML text.
 
-/// (name, TOML text).
-pub const BUILTIN: &[(&str, &str)] =
-    &[("demo", include_str!("../../scenarios/demo.toml")), ("salish", include_str!("../../scenarios/salish.toml"))];
+use crate::registry::{no_params, Entry, Registry};
 
+pub const BUILTIN: &[Entry<&str>] = &[
+    Entry {
+        id: "demo",
+        description:
+            "3-D AUV transit over seamounts, past a moving sphere, a wreck and an exclusion zone, through three eddies",
+        citation: "tidepath (synthetic)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/demo.toml"),
+    },
+    Entry {
+        id: "salish",
+        description: "2-D surface transit up the Strait of Juan de Fuca on a real elevation grid, with a flood tide",
+        citation: "elevation: matplotlib's topobathy sample (Strait of Juan de Fuca)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/salish.toml"),
+    },
+];
+
+pub fn registry() -> Registry<&'static str> {
+    Registry::new("built-in scenario", "SCENARIO", "tidepath scenarios", BUILTIN)
+}
+
+/// The TOML text of built-in scenario `name`.
 pub fn builtin(name: &str) -> Option<&'static str> {
-    BUILTIN.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
+    BUILTIN.iter().find(|e| e.id == name).map(|e| e.build)
 }
 
 pub fn builtin_names() -> impl Iterator<Item = &'static str> {
-    BUILTIN.iter().map(|(n, _)| *n)
+    BUILTIN.iter().map(|e| e.id)
 }
 
 #[cfg(test)]
@@ -19,11 +43,12 @@ mod tests {
 
     #[test]
     fn every_builtin_scenario_loads_and_plans() {
-        for (name, text) in BUILTIN {
-            let s = Scenario::from_toml(text, name).unwrap_or_else(|e| panic!("{name}: {e}"));
+        for e in BUILTIN {
+            let s = Scenario::from_toml(e.build, e.id).unwrap_or_else(|err| panic!("{}: {err}", e.id));
+            assert!(s.warnings.is_empty(), "{}: {:?}", e.id, s.warnings);
             let req = PlanRequest { iterations: Some(3), ..PlanRequest::default() };
-            let r = s.plan(&req, &mut |_| {}).unwrap_or_else(|e| panic!("{name}: {e}"));
-            assert_eq!(r.missions[0].waypoints.len(), s.encoding.waypoints + 2, "{name}");
+            let r = s.plan(&req, &mut |_| {}).unwrap_or_else(|err| panic!("{}: {err}", e.id));
+            assert_eq!(r.missions[0].waypoints.len(), s.encoding.waypoints + 2, "{}", e.id);
         }
     }
 }

@@ -11,7 +11,7 @@ mod plan;
 pub mod spec;
 
 pub use build::Scenario;
-pub use builtin::{builtin, builtin_names, BUILTIN};
+pub use builtin::{builtin, builtin_names, registry, BUILTIN};
 pub use plan::{default_time_limit_s, LimitSource, PlanRequest, DEFAULT_TIME_LIMIT_S};
 pub use spec::ScenarioSpec;
 
