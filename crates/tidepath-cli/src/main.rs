@@ -85,8 +85,39 @@ pub fn stop_flag() -> std::sync::Arc<std::sync::atomic::AtomicBool> {
     .clone()
 }
 
+/// Parses the command line. Usage errors become one line on stderr (exit 2), like every other
+/// input error; `--help` and `--version` print as usual.
+fn parse() -> Result<Cli, ExitCode> {
+    use clap::error::ErrorKind;
+    Cli::try_parse().map_err(|e| match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            let _ = e.print();
+            ExitCode::SUCCESS
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            ExitCode::from(2)
+        }
+        _ => {
+            let text = e.render().to_string();
+            // The first paragraph (clap may wrap it over several lines), on one line.
+            let first: Vec<&str> = text
+                .lines()
+                .skip_while(|l| l.trim().is_empty())
+                .take_while(|l| !l.trim().is_empty())
+                .map(str::trim)
+                .collect();
+            eprintln!("{} (see `tidepath --help`)", first.join(" "));
+            ExitCode::from(2)
+        }
+    })
+}
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match parse() {
+        Ok(cli) => cli,
+        Err(code) => return code,
+    };
     let result = match cli.command {
         Command::Scenarios => commands::scenarios::list(),
         Command::Scenario(args) => commands::scenarios::show(&args),

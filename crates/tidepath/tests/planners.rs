@@ -1,6 +1,8 @@
 //! The planning interface, tested once for every registered planner and for the kinds of
 //! planner the registry must accept: missions, fleets, status, termination, determinism.
 
+mod common;
+
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
@@ -46,6 +48,7 @@ fn every_registered_planner_meets_the_interface() {
             };
             assert_eq!(strip(&runs[0]), strip(&runs[1]), "{}: 1 and 4 threads differ on {name}", entry.id);
             assert!(runs[0].status.is_success(), "{} infeasible on {name}: {}", entry.id, runs[0].reason);
+            common::recheck_plan(&s, &runs[0]).unwrap();
             let limit = s.planner.iterations.unwrap();
             assert!(runs[0].iterations <= limit, "{}: {} iterations over {limit}", entry.id, runs[0].iterations);
         }
@@ -79,6 +82,7 @@ fn a_fleet_gets_one_timed_path_per_mission() {
     assert_ne!(s.missions[0].vehicle, s.missions[1].vehicle);
     let r = s.plan(&request("de", 5), &mut |_| {}).unwrap();
     assert_eq!(r.missions.len(), 2);
+    common::recheck_plan(&s, &r).unwrap();
     for (m, mission) in r.missions.iter().zip(&s.missions) {
         assert_eq!(m.name, mission.name);
         assert_eq!(m.waypoints.first().copied(), Some(mission.start.to_array()));

@@ -1,8 +1,8 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use tidepath::io::{write_atomic, PlanFile, PlanReport};
-use tidepath::plot::{write_plan_figure, PlanFigure, PlotPath};
+use tidepath::io::{check_target, Outputs, PlanFile, PlanReport};
+use tidepath::plot::{render_plan_figure, PlanFigure, PlotPath};
 use tidepath::scenario::{self, PlanRequest, Scenario};
 use tidepath::Error;
 
@@ -47,11 +47,15 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         // Only the first pool configuration counts; a fresh process has none yet.
         let _ = rayon::ThreadPoolBuilder::new().num_threads(crate::jobs(args.run.jobs)?).build_global();
     }
+    // Refuse bad output paths before spending time on planning.
     for (flag, path) in [("--out", &args.out), ("--plot", &args.plot)] {
-        if let Some(dir) = path.as_ref().and_then(|p| p.parent()).filter(|d| !d.as_os_str().is_empty()) {
-            if !dir.is_dir() {
-                return Err(Error::input(flag, format!("folder '{}' does not exist", dir.display())));
-            }
+        if let Some(p) = path {
+            check_target(flag, p)?;
+        }
+    }
+    if let (Some(a), Some(b)) = (&args.out, &args.plot) {
+        if a == b {
+            return Err(Error::input("--plot", format!("'{}' is also the --out file", b.display())));
         }
     }
     let init = match &args.init {
@@ -77,17 +81,20 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     bar.finish();
     let report = report?;
 
+    // Both files or neither.
+    let mut outputs = Outputs::new();
     if let Some(out) = &args.out {
-        write_atomic(out, report.to_json().as_bytes())?;
+        outputs.stage("--out", out, report.to_json().as_bytes())?;
     }
     if let Some(plot) = &args.plot {
-        write_figure(&scenario, &report, plot)?;
+        outputs.stage("--plot", plot, figure(&scenario, &report)?.as_bytes())?;
     }
+    outputs.commit()?;
     print_summary(&scenario, &report);
     Ok(Outcome::Status(report.status))
 }
 
-fn write_figure(scenario: &Scenario, report: &PlanReport, out: &std::path::Path) -> Result<(), Error> {
+fn figure(scenario: &Scenario, report: &PlanReport) -> Result<String, Error> {
     let history: Vec<f64> = report.history.iter().map(|h| h.unwrap_or(f64::NAN)).collect();
     let cost = report.cost.map_or("none".to_string(), |c| format!("{c:.4}"));
     let to_points = |p: &[[f64; 3]]| p.iter().map(|q| tidepath::Vec3::from_array(*q)).collect::<Vec<_>>();
@@ -112,7 +119,7 @@ fn write_figure(scenario: &Scenario, report: &PlanReport, out: &std::path::Path)
         paths: owned.iter().map(|(label, pts)| PlotPath { label: label.clone(), points: pts }).collect(),
         histories: vec![(report.planner.clone(), &history)],
     };
-    write_plan_figure(&fig, out)
+    render_plan_figure(&fig)
 }
 
 pub fn print_summary(scenario: &Scenario, r: &PlanReport) {

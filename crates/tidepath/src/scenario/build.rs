@@ -75,6 +75,15 @@ impl Scenario {
             warnings,
         };
         // Build once so configuration errors surface at load time, not mid-run.
+        let p = &scenario.planner;
+        for (name, v) in [("planner.iterations", p.iterations), ("planner.evaluations", p.evaluations)] {
+            if let Some(v) = v {
+                crate::termination::check_count(name, v)?;
+            }
+        }
+        if let Some(t) = p.time_limit_s {
+            crate::termination::check_wall_time("planner.time_limit_s", t)?;
+        }
         scenario.cost_model()?;
         scenario.build_encoding()?;
         let planner = &scenario.planner;
@@ -131,6 +140,9 @@ impl Scenario {
         })
     }
 }
+
+/// Largest coordinate (m) a domain may have.
+pub const MAX_COORDINATE: f64 = 1e8;
 
 /// Most interior waypoints an encoding may have.
 pub const MAX_WAYPOINTS: usize = 10_000;
@@ -226,6 +238,12 @@ fn build_world(spec: &WorldSpec) -> Result<World> {
             format!("min must be below max on every axis, got min {:?} max {:?}", spec.bounds.min, spec.bounds.max),
         ));
     }
+    if let Some(v) = spec.bounds.min.iter().chain(&spec.bounds.max).find(|v| v.abs() > MAX_COORDINATE) {
+        return Err(Error::input(
+            "world.bounds",
+            format!("coordinates must be within +-{MAX_COORDINATE:e} m (the Earth is 4e7 m around), got {v:e}"),
+        ));
+    }
     let bounds = Aabb::new(min, max);
     let terrain = build_terrain(&spec.terrain)?;
     if spec.obstacles.len() > MAX_OBSTACLES {
@@ -264,35 +282,102 @@ fn build_terrain(spec: &TerrainSpec) -> Result<Terrain> {
 
 fn build_obstacle(i: usize, spec: &ObstacleSpec) -> Result<Obstacle> {
     let field = |name: &str| format!("world.obstacles[{i}].{name}");
-    let (shape, velocity) = match spec {
-        ObstacleSpec::Sphere { center, radius, velocity } => {
-            finite_positive(&field("radius"), *radius)?;
-            (Shape::Sphere { center: Vec3::from_array(*center), radius: *radius }, velocity)
+    let kind = spec.kind;
+    let needs = |name: &str, present: bool| -> Result<()> {
+        if present {
+            Ok(())
+        } else {
+            Err(Error::input(field(name), format!("missing: kind = \"{}\" needs it", kind_id(kind))))
         }
-        ObstacleSpec::Cylinder { center, radius, z_min, z_max, velocity } => {
-            finite_positive(&field("radius"), *radius)?;
-            let (lo, hi) = (z_min.unwrap_or(f64::NEG_INFINITY), z_max.unwrap_or(f64::INFINITY));
+    };
+    let unused = |name: &str, present: bool| -> Result<()> {
+        if present {
+            Err(Error::input(field(name), format!("is not a field of kind = \"{}\"", kind_id(kind))))
+        } else {
+            Ok(())
+        }
+    };
+    let center = |n: usize| -> Result<Vec<f64>> {
+        needs("center", spec.center.is_some())?;
+        let c = spec.center.clone().unwrap_or_default();
+        if c.len() != n {
+            return Err(Error::input(field("center"), format!("needs {n} coordinates, got {}", c.len())));
+        }
+        Ok(c)
+    };
+    let radius = || -> Result<f64> {
+        needs("radius", spec.radius.is_some())?;
+        finite_positive(&field("radius"), spec.radius.unwrap_or_default())
+    };
+    let shape = match kind {
+        ObstacleKind::Sphere | ObstacleKind::Circle => {
+            for (name, present) in [
+                ("z_min", spec.z_min.is_some()),
+                ("z_max", spec.z_max.is_some()),
+                ("min", spec.min.is_some()),
+                ("max", spec.max.is_some()),
+            ] {
+                unused(name, present)?;
+            }
+            if kind == ObstacleKind::Sphere {
+                let c = center(3)?;
+                Shape::Sphere { center: Vec3::new(c[0], c[1], c[2]), radius: radius()? }
+            } else {
+                let c = center(2)?;
+                Shape::Circle { center: Vec2::new(c[0], c[1]), radius: radius()? }
+            }
+        }
+        ObstacleKind::Cylinder => {
+            for (name, present) in [("min", spec.min.is_some()), ("max", spec.max.is_some())] {
+                unused(name, present)?;
+            }
+            let c = center(2)?;
+            let r = radius()?;
+            let (lo, hi) = (spec.z_min.unwrap_or(f64::NEG_INFINITY), spec.z_max.unwrap_or(f64::INFINITY));
             if lo >= hi {
                 return Err(Error::input(field("z_min"), format!("must be below z_max, got {lo} >= {hi}")));
             }
-            (Shape::Cylinder { center: Vec2::from_array(*center), radius: *radius, z_min: lo, z_max: hi }, velocity)
+            Shape::Cylinder { center: Vec2::new(c[0], c[1]), radius: r, z_min: lo, z_max: hi }
         }
-        ObstacleSpec::Box { min, max, velocity } => {
-            let (lo, hi) = (Vec3::from_array(*min), Vec3::from_array(*max));
+        ObstacleKind::Box => {
+            for (name, present) in [
+                ("center", spec.center.is_some()),
+                ("radius", spec.radius.is_some()),
+                ("z_min", spec.z_min.is_some()),
+                ("z_max", spec.z_max.is_some()),
+            ] {
+                unused(name, present)?;
+            }
+            needs("min", spec.min.is_some())?;
+            needs("max", spec.max.is_some())?;
+            let (min, max) = (spec.min.unwrap_or_default(), spec.max.unwrap_or_default());
+            let (lo, hi) = (Vec3::from_array(min), Vec3::from_array(max));
             if !lo.cmplt(hi).all() {
                 return Err(Error::input(
                     field("min"),
                     format!("must be below max on every axis, got {min:?} and {max:?}"),
                 ));
             }
-            (Shape::Box { min: lo, max: hi }, velocity)
-        }
-        ObstacleSpec::Circle { center, radius, velocity } => {
-            finite_positive(&field("radius"), *radius)?;
-            (Shape::Circle { center: Vec2::from_array(*center), radius: *radius }, velocity)
+            Shape::Box { min: lo, max: hi }
         }
     };
-    Ok(Obstacle { shape, velocity: velocity.map(Vec3::from_array).unwrap_or(Vec3::ZERO) })
+    let velocity = spec.velocity.map(Vec3::from_array).unwrap_or(Vec3::ZERO);
+    if velocity.length() > MAX_SPEED {
+        return Err(Error::input(
+            field("velocity"),
+            format!("must be at most {MAX_SPEED} m/s, got {:?}", spec.velocity),
+        ));
+    }
+    Ok(Obstacle { shape, velocity })
+}
+
+fn kind_id(k: ObstacleKind) -> &'static str {
+    match k {
+        ObstacleKind::Sphere => "sphere",
+        ObstacleKind::Cylinder => "cylinder",
+        ObstacleKind::Box => "box",
+        ObstacleKind::Circle => "circle",
+    }
 }
 
 fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
@@ -344,10 +429,24 @@ fn build_vehicle(s: &VehicleSpec, at: &str) -> Result<Vehicle> {
     })
 }
 
+/// The current step may be no finer than this fraction of the domain's horizontal diagonal:
+/// 100,000 pieces across the domain, so one evaluation stays bounded.
+pub const MIN_STEP_FRACTION: f64 = 1e-5;
+
 fn build_settings(spec: &ModelSpec, world: &World) -> Result<ModelSettings> {
     let diag = world.bounds.size().truncate().length();
     let current_step = match spec.current_step {
-        Some(s) => finite_positive("model.current_step", s)?,
+        Some(s) => {
+            finite_positive("model.current_step", s)?;
+            let min = diag * MIN_STEP_FRACTION;
+            if s < min {
+                return Err(Error::input(
+                    "model.current_step",
+                    format!("must be at least {min:.3e} m (1e-5 of the domain diagonal), got {s:e}"),
+                ));
+            }
+            s
+        }
         // 100 pieces across the domain: fine enough for vortices the size of a tenth of it.
         None => diag / 100.0,
     };

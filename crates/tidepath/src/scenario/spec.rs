@@ -90,38 +90,42 @@ pub struct PeakSpec {
     pub sigma_y: f64,
 }
 
+/// The shapes an obstacle can have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ObstacleKind {
+    /// `center` [x, y, z], `radius`.
+    Sphere,
+    /// Vertical cylinder: `center` [x, y], `radius`, optional `z_min` / `z_max` (omit both for
+    /// the full water column).
+    Cylinder,
+    /// Axis-aligned box: `min`, `max` [x, y, z].
+    Box,
+    /// Disc in a 2-D world: `center` [x, y], `radius`.
+    Circle,
+}
+
+/// One obstacle. A flat record (not a tagged enum) so that a type error names the exact field,
+/// e.g. `world.obstacles[3].radius`; which fields a kind needs is checked when the world is built.
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
-pub enum ObstacleSpec {
-    Sphere {
-        center: P3,
-        radius: f64,
-        #[serde(default)]
-        velocity: Option<P3>,
-    },
-    /// Vertical cylinder; omit z_min / z_max for the full water column.
-    Cylinder {
-        center: P2,
-        radius: f64,
-        #[serde(default)]
-        z_min: Option<f64>,
-        #[serde(default)]
-        z_max: Option<f64>,
-        #[serde(default)]
-        velocity: Option<P3>,
-    },
-    Box {
-        min: P3,
-        max: P3,
-        #[serde(default)]
-        velocity: Option<P3>,
-    },
-    Circle {
-        center: P2,
-        radius: f64,
-        #[serde(default)]
-        velocity: Option<P3>,
-    },
+#[serde(deny_unknown_fields)]
+pub struct ObstacleSpec {
+    pub kind: ObstacleKind,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub center: Option<Vec<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub z_min: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub z_max: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min: Option<P3>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max: Option<P3>,
+    /// Constant velocity (m/s); the shape is where it is at time 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub velocity: Option<P3>,
 }
 
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]

@@ -47,6 +47,11 @@ impl Default for ModelSettings {
 /// not rejected by rounding.
 pub const BOUNDS_SLACK: f64 = 1e-9;
 
+/// Most pieces one segment is flown in. A segment longer than `MAX_PIECES` current steps (only
+/// a waypoint far outside the domain makes one) uses longer pieces, so a hostile plan file
+/// cannot make one evaluation run for hours.
+pub const MAX_PIECES: f64 = 100_000.0;
+
 /// Moving obstacles whose hits are counted once per motion; beyond this many (a world built in
 /// code, scenario files are capped lower), a hit may be counted once per piece.
 const MAX_TRACKED_MOVING: usize = 1024;
@@ -222,7 +227,7 @@ impl<'a> Validator<'a> {
                         return (t1, 0);
                     }
                     Current::Uniform(_) => 1.0,
-                    _ => (len / self.settings.current_step).ceil().max(1.0),
+                    _ => (len / self.settings.current_step).ceil().clamp(1.0, MAX_PIECES),
                 };
                 let n = pieces as u32;
                 let step = len / pieces;

@@ -3,6 +3,10 @@
 
 use crate::error::{Error, Result};
 
+/// Most nodes a grid may have: 2^28 (2 GiB of f64 values), far beyond any scenario file and
+/// any sensible in-memory subset of a bathymetry file.
+pub const MAX_NODES: usize = 1 << 28;
+
 /// Node (i, j) sits at (x0 + i dx, y0 + j dy); values are stored row-major by y then x:
 /// `values[j * nx + i]`.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,6 +33,15 @@ impl RegularGrid2 {
                 format!("{field}.shape"),
                 format!("needs at least 2 x 2 nodes, got [{nx}, {ny}]"),
             ));
+        }
+        match nx.checked_mul(ny) {
+            Some(n) if n <= MAX_NODES => {}
+            _ => {
+                return Err(Error::input(
+                    format!("{field}.shape"),
+                    format!("[{nx}, {ny}] has more than {MAX_NODES} nodes"),
+                ));
+            }
         }
         if !x0.is_finite() || !y0.is_finite() {
             return Err(Error::input(format!("{field}.origin"), format!("must be finite, got [{x0}, {y0}]")));
