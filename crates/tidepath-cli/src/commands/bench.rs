@@ -72,10 +72,13 @@ pub fn run(args: &BenchArgs) -> Result<Outcome, Error> {
     }
 }
 
+/// Largest `--dim`: the benchmark functions' published settings go to 120.
+pub const MAX_DIM: usize = 100_000;
+
 fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
     let jobs = crate::jobs(args.jobs)?;
-    if args.dim == 0 {
-        return Err(Error::input("--dim", "must be at least 1, got 0"));
+    if args.dim == 0 || args.dim > MAX_DIM {
+        return Err(Error::input("--dim", format!("must be in [1, {MAX_DIM}], got {}", args.dim)));
     }
     let mut problems = Vec::new();
     for name in &args.funcs {
@@ -115,6 +118,12 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
             }
         };
         problems.push(FunctionProblem { function, dim, lower: lo, upper: hi, label: format!("{name}-d{dim}-{tag}") });
+    }
+    // Memory before any allocation: every optimizer's population times the largest dimension.
+    let largest = problems.iter().map(|p| p.dim).max().unwrap_or(0);
+    for id in &args.algos {
+        let opt = tidepath::planner::build_optimizer(id, None, args.population)?;
+        tidepath::optim::check_memory(opt.population(), largest)?;
     }
     let budget = RunBudget {
         iterations: None,

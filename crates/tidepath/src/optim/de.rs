@@ -112,6 +112,10 @@ impl Optimizer for De {
         "de"
     }
 
+    fn population(&self) -> usize {
+        self.params.population
+    }
+
     fn init(&mut self, ctx: &mut Context<'_>) {
         let n = self.params.population;
         self.x = Population::initial(n, ctx);

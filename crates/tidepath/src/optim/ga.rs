@@ -320,6 +320,10 @@ impl Optimizer for Ga {
         "ga"
     }
 
+    fn population(&self) -> usize {
+        self.params.population
+    }
+
     fn init(&mut self, ctx: &mut Context<'_>) {
         let n = self.params.population;
         let dim = ctx.dim();

@@ -25,6 +25,23 @@ pub use runner::{run, Progress, RunResult, DEFAULT_ITERATIONS};
 /// (a 40-waypoint 3-D path at 100,000 individuals already holds 64 MB of vectors).
 pub const MAX_POPULATION: usize = 100_000;
 
+/// Most decision values (population x dimension) a run may hold: 20 million f64 (160 MB per
+/// copy; optimizers keep a few copies). Checked before any allocation.
+pub const MAX_POPULATION_VALUES: usize = 20_000_000;
+
+/// Checks that `population` individuals of `dim` variables fit [`MAX_POPULATION_VALUES`].
+pub fn check_memory(population: usize, dim: usize) -> crate::error::Result<()> {
+    match population.checked_mul(dim) {
+        Some(n) if n <= MAX_POPULATION_VALUES => Ok(()),
+        _ => Err(crate::error::Error::input(
+            "planner.params.population",
+            format!(
+                "{population} individuals of {dim} variables exceed the limit of {MAX_POPULATION_VALUES} values; use fewer individuals or waypoints"
+            ),
+        )),
+    }
+}
+
 /// Checks a population size against `min` and [`MAX_POPULATION`].
 pub fn check_population(n: usize, min: usize) -> crate::error::Result<()> {
     if n < min || n > MAX_POPULATION {
@@ -70,6 +87,8 @@ pub trait Objective: Sync {
 pub trait Optimizer: Send {
     /// The planner id (`pso`, `ga`, ...).
     fn id(&self) -> &'static str;
+    /// Individuals held at once, for the memory check before a run.
+    fn population(&self) -> usize;
     /// Creates and evaluates the initial population.
     fn init(&mut self, ctx: &mut Context<'_>);
     /// One iteration (generation).

@@ -237,6 +237,10 @@ impl Optimizer for Pso {
         "pso"
     }
 
+    fn population(&self) -> usize {
+        self.params.population
+    }
+
     fn init(&mut self, ctx: &mut Context<'_>) {
         let n = self.params.population;
         let dim = ctx.dim();

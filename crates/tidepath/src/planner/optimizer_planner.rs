@@ -4,6 +4,7 @@
 use super::{PathObjective, Planner, PlannerOutput, Problem, RunOptions, SearchStats};
 use crate::encoding::{self, Encoding, EncodingArgs, EncodingSpec};
 use crate::error::Result;
+use crate::optim::Objective as _;
 use crate::optim::{self, Optimizer, Progress};
 use crate::rng::Rng;
 use crate::termination::Termination;
@@ -42,7 +43,8 @@ impl Planner for OptimizerPlanner {
     }
 
     fn check(&self, problem: &Problem<'_>) -> Result<()> {
-        self.encodings(problem).map(|_| ())
+        let dim: usize = self.encodings(problem)?.iter().map(|e| e.dim()).sum();
+        optim::check_memory(self.optimizer.population(), dim)
     }
 
     fn plan(
@@ -65,8 +67,14 @@ impl Planner for OptimizerPlanner {
         let objective = PathObjective::new(problem, encodings);
         let seeds: Vec<Vec<f64>> = options.init.and_then(|p| objective.encode(p)).into_iter().collect();
         let r = optim::run(self.optimizer.as_mut(), &objective, termination, rng, options.parallel, &seeds, observer);
+        // No best point when no evaluation gave a number (all NaN): no path, status infeasible.
+        let paths = if r.best_x.len() == objective.dim() {
+            objective.decode(&r.best_x)
+        } else {
+            vec![Vec::new(); problem.missions.len()]
+        };
         PlannerOutput {
-            paths: objective.decode(&r.best_x),
+            paths,
             claim: None,
             stats: SearchStats {
                 iterations: r.iterations,

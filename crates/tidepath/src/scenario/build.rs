@@ -401,9 +401,11 @@ fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
 }
 
 fn build_vehicle(s: &VehicleSpec, at: &str) -> Result<Vehicle> {
-    finite_positive(&format!("{at}.speed"), s.speed)?;
-    if s.speed > MAX_SPEED {
-        return Err(Error::input(format!("{at}.speed"), format!("must be at most {MAX_SPEED} m/s, got {}", s.speed)));
+    if !(MIN_SPEED..=MAX_SPEED).contains(&s.speed) {
+        return Err(Error::input(
+            format!("{at}.speed"),
+            format!("must be in [{MIN_SPEED}, {MAX_SPEED}] m/s, got {:?}", s.speed),
+        ));
     }
     for (name, v, max) in [("max_turn_deg", s.max_turn_deg, 180.0), ("max_pitch_deg", s.max_pitch_deg, 90.0)] {
         if !(v > 0.0 && v <= max) {
@@ -453,6 +455,9 @@ fn build_settings(spec: &ModelSpec, world: &World) -> Result<ModelSettings> {
     Ok(ModelSettings { travel: spec.travel_time, current_step })
 }
 
+/// Slowest vehicle accepted (m/s): below any marine robot's cruise speed; slower speeds make
+/// travel times overflow.
+pub const MIN_SPEED: f64 = 0.01;
 /// Fastest vehicle accepted (m/s): faster than any marine robot, slow enough that the clock
 /// stays meaningful.
 pub const MAX_SPEED: f64 = 100.0;
