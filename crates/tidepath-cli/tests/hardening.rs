@@ -230,3 +230,49 @@ fn a_missing_plot_folder_leaves_no_json_behind() {
     assert_eq!(o.status.code(), Some(2));
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "old", "out.json replaced");
 }
+
+#[test]
+fn compare_with_table_md_as_a_directory_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir_all(out.join("table.md")).unwrap();
+    let (o, _) = tidepath(&[
+        "compare",
+        "demo",
+        "--planners",
+        "pso,de",
+        "--runs",
+        "2",
+        "--iterations",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("table.md"));
+    let left: Vec<_> = std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(left, vec![std::ffi::OsString::from("table.md")], "files left behind");
+}
+
+#[test]
+fn compare_into_a_new_folder_writes_every_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("new/out");
+    let (o, _) = tidepath(&[
+        "compare",
+        "demo",
+        "--planners",
+        "pso",
+        "--runs",
+        "2",
+        "--iterations",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    // The parent `new` does not exist: created with the output folder, as before.
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    for f in ["results.json", "runs.csv", "table.md", "convergence.svg", "boxplot.svg", "paths.svg"] {
+        assert!(out.join(f).is_file(), "{f} missing");
+    }
+}

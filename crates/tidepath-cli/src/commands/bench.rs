@@ -1,11 +1,11 @@
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
-use tidepath::experiments::compare::{compare_functions, FunctionProblem, RunBudget};
-use tidepath::experiments::output;
-use tidepath::experiments::table::markdown;
 use tidepath::optim::functions::Function;
 use tidepath::Error;
+use tidepath_experiments::compare::{compare_functions, FunctionProblem, RunBudget};
+use tidepath_experiments::output;
+use tidepath_experiments::table::markdown;
 
 use crate::progress::RunsBar;
 use crate::Outcome;
@@ -136,7 +136,7 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {
-        output::write_all(&c, dir, None)?;
+        output::write_all(&c, dir, None, &tidepath_plot::ExperimentFigures)?;
     }
     println!(
         "{} runs per pair, {} evaluations each, master seed {}, {:.1} s\n",

@@ -1,11 +1,11 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use tidepath::experiments::compare::{compare_scenario, RunBudget};
-use tidepath::experiments::output;
-use tidepath::experiments::table::markdown;
 use tidepath::scenario;
 use tidepath::Error;
+use tidepath_experiments::compare::{compare_scenario, RunBudget};
+use tidepath_experiments::output;
+use tidepath_experiments::table::markdown;
 
 use crate::progress::RunsBar;
 use crate::Outcome;
@@ -45,7 +45,7 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {
-        output::write_all(&c, dir, Some(&scenario))?;
+        output::write_all(&c, dir, Some(&scenario), &tidepath_plot::ExperimentFigures)?;
     }
     if let Some(log) = &args.ompl_log {
         output::write_ompl(&c, log)?;

@@ -2,9 +2,9 @@ use std::path::PathBuf;
 
 use clap::Args;
 use tidepath::io::{check_target, Outputs, PlanFile, PlanReport};
-use tidepath::plot::{render_plan_figure, PlanFigure, PlotPath};
 use tidepath::scenario::{self, PlanRequest, Scenario};
 use tidepath::Error;
+use tidepath_plot::{render_plan_figure, PlanFigure, PlotPath};
 
 use crate::progress::DelayedBar;
 use crate::Outcome;

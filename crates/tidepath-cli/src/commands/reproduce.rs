@@ -1,8 +1,8 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use tidepath::experiments::reproduce::{paper, reproduce, ClaimVerdict, ReproduceOptions, PAPERS};
 use tidepath::Error;
+use tidepath_experiments::reproduce::{paper, reproduce, ClaimVerdict, ReproduceOptions, PAPERS};
 
 use crate::progress::RunsBar;
 use crate::Outcome;
@@ -35,10 +35,16 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
     let paper = paper(&args.paper)?;
     let opts = ReproduceOptions { runs: args.runs, master_seed: args.seed, jobs: crate::jobs(args.jobs)? };
     let bar = std::sync::Mutex::new(None::<RunsBar>);
-    let outcomes = reproduce(paper, &opts, &args.out, &|done, total| {
-        let mut b = bar.lock().expect("progress lock");
-        b.get_or_insert_with(|| RunsBar::new(paper.id, total)).set(done);
-    });
+    let outcomes = reproduce(
+        paper,
+        &opts,
+        &args.out,
+        &|done, total| {
+            let mut b = bar.lock().expect("progress lock");
+            b.get_or_insert_with(|| RunsBar::new(paper.id, total)).set(done);
+        },
+        &tidepath_plot::ExperimentFigures,
+    );
     if let Some(b) = bar.into_inner().expect("progress lock") {
         b.finish();
     }

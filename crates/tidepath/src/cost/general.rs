@@ -16,9 +16,9 @@ use serde::{Deserialize, Serialize};
 use super::CostModel;
 use crate::error::{Error, Result};
 use crate::geom::Vec3;
-use crate::optim::Scratch;
 use crate::path::PathModel;
 use crate::registry::Param;
+use crate::scratch::Scratch;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]

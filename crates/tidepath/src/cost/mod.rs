@@ -7,9 +7,9 @@ pub use general::{GeneralCost, GeneralWeights};
 
 use crate::error::Result;
 use crate::geom::Vec3;
-use crate::optim::Scratch;
 use crate::path::PathModel;
 use crate::registry::{defaults_of, Entry, Registry};
+use crate::scratch::Scratch;
 
 pub type BuildCost = fn(&toml::Table) -> Result<Box<dyn CostModel>>;
 

@@ -53,14 +53,7 @@ pub fn check_population(n: usize, min: usize) -> crate::error::Result<()> {
     Ok(())
 }
 
-/// Reusable buffers for one evaluation, so the hot path never allocates.
-/// Each rayon worker gets its own; objectives that need none ignore it.
-#[derive(Default, Debug)]
-pub struct Scratch {
-    pub points: Vec<crate::geom::Vec3>,
-    pub times: Vec<f64>,
-    pub values: Vec<f64>,
-}
+pub use crate::scratch::Scratch;
 
 /// A box-bounded cost to minimise.
 pub trait Objective: Sync {

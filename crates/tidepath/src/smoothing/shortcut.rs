@@ -6,8 +6,8 @@
 use super::Smoother;
 use crate::cost::CostModel;
 use crate::geom::Vec3;
-use crate::optim::Scratch;
 use crate::path::PathModel;
+use crate::scratch::Scratch;
 
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Shortcut;

@@ -1,0 +1,232 @@
+//! `compare` and `bench functions`: build the tasks, run them, summarise.
+
+use std::time::Instant;
+
+use serde::{Deserialize, Serialize};
+
+use super::runner::{execute, tasks, Task};
+use super::table::{rows_for, PlannerRow};
+use super::RunRecord;
+use tidepath::error::{Error, Result};
+use tidepath::optim::functions::{Function, FunctionObjective};
+use tidepath::optim::{self, Optimizer};
+use tidepath::planner::build_optimizer;
+use tidepath::rng::run_rng;
+use tidepath::scenario::{PlanRequest, Scenario};
+use tidepath::termination::{check_count, check_wall_time, Termination};
+
+/// Budget overrides shared by every run of an experiment.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct RunBudget {
+    pub iterations: Option<u64>,
+    pub evaluations: Option<u64>,
+    pub population: Option<usize>,
+    /// Wall-time safety net (s); runs stopped by it are marked `wall_time`.
+    pub time_limit_s: Option<f64>,
+}
+
+/// Everything `results.json` holds.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Comparison {
+    pub tidepath_version: String,
+    /// "scenario" or "functions".
+    pub kind: String,
+    pub problems: Vec<String>,
+    pub planners: Vec<String>,
+    pub runs: u64,
+    pub master_seed: u64,
+    pub budget: RunBudget,
+    pub rows: Vec<PlannerRow>,
+    pub records: Vec<RunRecord>,
+    /// Timing field: wall time of the whole experiment (s).
+    pub total_wall_s: f64,
+}
+
+impl Comparison {
+    pub fn is_functions(&self) -> bool {
+        self.kind == "functions"
+    }
+
+    pub fn records_of<'a>(&'a self, problem: &'a str, planner: &'a str) -> impl Iterator<Item = &'a RunRecord> + 'a {
+        self.records.iter().filter(move |r| r.problem == problem && r.planner == planner)
+    }
+}
+
+fn check_planners(planners: &[String]) -> Result<()> {
+    if planners.is_empty() {
+        return Err(Error::input("--planners", "name at least one planner"));
+    }
+    for (i, p) in planners.iter().enumerate() {
+        if planners[..i].contains(p) {
+            return Err(Error::input("--planners", format!("'{p}' is listed twice")));
+        }
+    }
+    Ok(())
+}
+
+/// Runs every planner `runs` times on a scenario.
+pub fn compare_scenario(
+    scenario: &Scenario,
+    planners: &[String],
+    runs: u64,
+    master_seed: u64,
+    budget: &RunBudget,
+    jobs: usize,
+    on_done: &(dyn Fn(usize) + Sync),
+) -> Result<Comparison> {
+    check_planners(planners)?;
+    if runs == 0 {
+        return Err(Error::input("--runs", "must be at least 1, got 0"));
+    }
+    // Fail on a bad planner id or parameter before any run starts.
+    let registry = tidepath::planner::registry();
+    for p in planners {
+        let population = budget.population.or(scenario.planner.population);
+        registry.build(p, scenario.planner.params.get(p), population, &scenario.encoding)?;
+    }
+    scenario.termination(&request(budget, "", 0))?;
+    let problems = vec![scenario.name.clone()];
+    let all = tasks(master_seed, &problems, planners, runs);
+    let start = Instant::now();
+    let records = execute(&all, jobs, |t| scenario_run(scenario, budget, t), on_done)?;
+    Ok(finish("scenario", problems, planners, runs, master_seed, budget, records, start))
+}
+
+fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
+    PlanRequest {
+        planner: (!planner.is_empty()).then(|| planner.to_string()),
+        seed,
+        run: 0,
+        iterations: budget.iterations,
+        evaluations: budget.evaluations,
+        population: budget.population,
+        time_limit_s: budget.time_limit_s,
+        parallel: false,
+        smoother: None,
+        init: None,
+        stop: None,
+    }
+}
+
+fn scenario_run(scenario: &Scenario, budget: &RunBudget, t: &Task) -> Result<RunRecord> {
+    let r = scenario.plan(&request(budget, &t.planner, t.seed), &mut |_| {})?;
+    Ok(RunRecord {
+        problem: t.problem.clone(),
+        planner: t.planner.clone(),
+        run: t.run,
+        seed: t.seed,
+        cost: r.cost_value(),
+        feasible: r.feasible,
+        length_m: r.length_m(),
+        travel_time_s: r.travel_time_s(),
+        evaluations: r.evaluations,
+        iterations: r.iterations,
+        elapsed_s: r.elapsed_s,
+        stop_reason: r.stop_reason,
+        waypoints: r.paths().first().map(|p| p.iter().map(|q| q.to_array()).collect()).unwrap_or_default(),
+        history: r.history,
+    })
+}
+
+/// One benchmark-function problem: a function, its dimension and its box.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FunctionProblem {
+    pub function: Function,
+    pub dim: usize,
+    pub lower: f64,
+    pub upper: f64,
+    /// Label used in tables, e.g. `sphere-d30-small`.
+    pub label: String,
+}
+
+/// Builds an optimizer for a planner id; the default uses each optimizer's default parameters.
+pub type OptimizerFactory<'a> = dyn Fn(&str) -> Result<Box<dyn Optimizer>> + Sync + 'a;
+
+/// Runs every optimizer `runs` times on each function problem.
+#[allow(clippy::too_many_arguments)]
+pub fn compare_functions(
+    problems: &[FunctionProblem],
+    planners: &[String],
+    runs: u64,
+    master_seed: u64,
+    budget: &RunBudget,
+    jobs: usize,
+    factory: Option<&OptimizerFactory<'_>>,
+    on_done: &(dyn Fn(usize) + Sync),
+) -> Result<Comparison> {
+    check_planners(planners)?;
+    if runs == 0 {
+        return Err(Error::input("--runs", "must be at least 1, got 0"));
+    }
+    let default_factory = |id: &str| build_optimizer(id, None, budget.population);
+    let factory: &OptimizerFactory<'_> = factory.unwrap_or(&default_factory);
+    for p in planners {
+        factory(p)?;
+    }
+    let labels: Vec<String> = problems.iter().map(|p| p.label.clone()).collect();
+    let all = tasks(master_seed, &labels, planners, runs);
+    let b = Termination {
+        max_iterations: budget.iterations.map(|n| check_count("--iterations", n)).transpose()?,
+        max_evaluations: budget.evaluations.map(|n| check_count("--evaluations", n)).transpose()?,
+        wall_time: Some(match budget.time_limit_s {
+            Some(t) => check_wall_time("--time-limit", t)?,
+            None => check_wall_time("default time limit", tidepath::scenario::default_time_limit_s()?)?,
+        }),
+        ..Termination::default()
+    };
+    let start = Instant::now();
+    let records = execute(
+        &all,
+        jobs,
+        |t| {
+            let problem = problems.iter().find(|p| p.label == t.problem).expect("task problem exists");
+            let objective = FunctionObjective::new(problem.function, problem.dim, problem.lower, problem.upper);
+            let mut opt = factory(&t.planner)?;
+            let r = optim::run(opt.as_mut(), &objective, &b, &mut run_rng(t.seed, 0), false, &[], &mut |_| {});
+            Ok(RunRecord {
+                problem: t.problem.clone(),
+                planner: t.planner.clone(),
+                run: t.run,
+                seed: t.seed,
+                cost: r.best_cost,
+                feasible: true,
+                length_m: None,
+                travel_time_s: None,
+                evaluations: r.evaluations,
+                iterations: r.iterations,
+                elapsed_s: r.elapsed.as_secs_f64(),
+                stop_reason: r.stop_reason,
+                history: r.history.iter().map(|h| h.is_finite().then_some(*h)).collect(),
+                waypoints: Vec::new(),
+            })
+        },
+        on_done,
+    )?;
+    Ok(finish("functions", labels, planners, runs, master_seed, budget, records, start))
+}
+
+#[allow(clippy::too_many_arguments)]
+fn finish(
+    kind: &str,
+    problems: Vec<String>,
+    planners: &[String],
+    runs: u64,
+    master_seed: u64,
+    budget: &RunBudget,
+    records: Vec<RunRecord>,
+    start: Instant,
+) -> Comparison {
+    let rows = problems.iter().flat_map(|p| rows_for(p, planners, &records)).collect();
+    Comparison {
+        tidepath_version: env!("CARGO_PKG_VERSION").to_string(),
+        kind: kind.to_string(),
+        problems,
+        planners: planners.to_vec(),
+        runs,
+        master_seed,
+        budget: budget.clone(),
+        rows,
+        records,
+        total_wall_s: start.elapsed().as_secs_f64(),
+    }
+}

@@ -1,0 +1,143 @@
+//! The files `compare` and `bench functions` write into their output folder.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use super::compare::Comparison;
+use tidepath::error::{Error, Result};
+use tidepath::io::{write_atomic, Outputs};
+use tidepath::scenario::Scenario;
+
+/// Fields that measure time and so differ between otherwise identical reruns.
+pub const TIMING_FIELDS: &[&str] = &["elapsed_s", "mean_wall_s", "total_wall_s"];
+
+pub fn results_json(c: &Comparison) -> String {
+    serde_json::to_string_pretty(c).expect("comparison serialises") + "\n"
+}
+
+/// One row per run.
+pub fn runs_csv(c: &Comparison) -> String {
+    let mut out = String::from(
+        "problem,planner,run,seed,cost,feasible,length_m,travel_time_s,evaluations,iterations,elapsed_s,stop_reason\n",
+    );
+    let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v}"));
+    for r in &c.records {
+        let stop =
+            serde_json::to_value(r.stop_reason).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{},{},{},{}",
+            csv_field(&r.problem),
+            csv_field(&r.planner),
+            r.run,
+            r.seed,
+            r.cost,
+            r.feasible,
+            opt(r.length_m),
+            opt(r.travel_time_s),
+            r.evaluations,
+            r.iterations,
+            r.elapsed_s,
+            stop
+        );
+    }
+    out
+}
+
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// Draws a comparison's figures. The plotting layer implements it and the command line passes
+/// it in, so the experiments never import plotting.
+pub trait FigureRenderer: Sync {
+    /// (file name, SVG text) of every figure of `c`; `scenario` adds its map.
+    fn render(&self, c: &Comparison, scenario: Option<&Scenario>) -> Result<Vec<(String, String)>>;
+}
+
+/// No figures (tables only).
+pub struct NoFigures;
+
+impl FigureRenderer for NoFigures {
+    fn render(&self, _: &Comparison, _: Option<&Scenario>) -> Result<Vec<(String, String)>> {
+        Ok(Vec::new())
+    }
+}
+
+/// results.json, runs.csv and table.md (the Markdown table printed on stdout).
+pub fn table_files(c: &Comparison) -> Vec<(String, String)> {
+    vec![
+        ("results.json".into(), results_json(c)),
+        ("runs.csv".into(), runs_csv(c)),
+        ("table.md".into(), super::table::markdown(&c.rows, c.is_functions())),
+    ]
+}
+
+/// Stages `files` (name, contents) into `dir` through `out`.
+pub fn stage_files(out: &mut Outputs, flag: &str, dir: &Path, files: &[(String, String)]) -> Result<()> {
+    for (name, text) in files {
+        out.stage(flag, &dir.join(name), text.as_bytes())?;
+    }
+    Ok(())
+}
+
+/// Runs `write` with `dir` created if missing; when `write` fails, a folder it created is removed
+/// again, so a failed command leaves nothing behind.
+pub fn in_output_dir(flag: &str, dir: &Path, write: impl FnOnce() -> Result<()>) -> Result<()> {
+    let created = !dir.exists();
+    if created {
+        std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    } else if !dir.is_dir() {
+        return Err(Error::input(flag, format!("'{}' exists and is not a folder", dir.display())));
+    }
+    let r = write();
+    if r.is_err() && created {
+        let _ = std::fs::remove_dir_all(dir);
+    }
+    r
+}
+
+/// The tables and `figures` of `c` in `dir`: all files or none.
+pub fn write_all(c: &Comparison, dir: &Path, scenario: Option<&Scenario>, figures: &dyn FigureRenderer) -> Result<()> {
+    in_output_dir("--out", dir, || {
+        let mut out = Outputs::new();
+        stage_files(&mut out, "--out", dir, &table_files(c))?;
+        stage_files(&mut out, "--out", dir, &figures.render(c, scenario)?)?;
+        out.commit()
+    })
+}
+
+/// An OMPL benchmark log of the comparison (one experiment per problem, concatenated logs are
+/// not allowed by the format, so only the first problem is written; `compare` has one).
+pub fn write_ompl(c: &Comparison, path: &Path) -> Result<()> {
+    use super::ompl_log::{write_ompl_log, OmplLogInfo};
+    let problem = c.problems.first().cloned().unwrap_or_default();
+    let host =
+        std::fs::read_to_string("/etc/hostname").map(|h| h.trim().to_string()).unwrap_or_else(|_| "unknown".into());
+    let now = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+    let setup = format!(
+        "tidepath {} compare; planners {}; {} runs per planner; master seed {}; budget {:?}",
+        c.tidepath_version,
+        c.planners.join(","),
+        c.runs,
+        c.master_seed,
+        c.budget
+    );
+    let info = OmplLogInfo {
+        experiment: &problem,
+        host: &host,
+        start_unix_s: now.saturating_sub(c.total_wall_s as u64),
+        setup: &setup,
+        cpu_info: None,
+        master_seed: c.master_seed,
+        time_limit_s: c.budget.time_limit_s,
+        total_time_s: c.total_wall_s,
+    };
+    let planners: Vec<(&str, Vec<&super::RunRecord>)> =
+        c.planners.iter().map(|p| (p.as_str(), c.records_of(&problem, p).collect())).collect();
+    write_atomic(path, write_ompl_log(&info, &planners).as_bytes())
+}

@@ -1,0 +1,82 @@
+//! `tidepath reproduce PAPER`: each paper registers its experiments (problems, planners,
+//! parameters and the paper's own reported numbers); the runner sets our results beside the
+//! paper's and states plainly which claims reproduce. A claim that does not reproduce is
+//! reported with the data; nothing is tuned to make it hold.
+
+mod baselines;
+mod claims;
+mod report;
+
+pub use claims::{Claim, ClaimVerdict, Direction};
+pub use report::{PaperCell, PaperTable};
+
+use std::path::Path;
+
+use super::compare::Comparison;
+use tidepath::error::{Error, Result};
+
+/// Options shared by every reproduction.
+#[derive(Clone, Debug)]
+pub struct ReproduceOptions {
+    pub runs: u64,
+    pub master_seed: u64,
+    pub jobs: usize,
+}
+
+/// One experiment of a paper, after running it.
+pub struct ExperimentOutcome {
+    /// File-name-safe id, e.g. `table2-small`.
+    pub id: String,
+    pub title: String,
+    /// Setup in prose: problems, parameters, budget, and every reading we had to choose.
+    pub setup: String,
+    pub comparison: Comparison,
+    pub paper: PaperTable,
+    pub claims: Vec<(Claim, ClaimVerdict)>,
+    /// Findings computed from the data that the table alone does not make obvious.
+    pub notes: Vec<String>,
+}
+
+/// Progress callback: (runs finished, runs in total).
+pub type ProgressFn<'a> = dyn Fn(usize, usize) + Sync + 'a;
+
+/// Runs every experiment of a paper.
+pub type RunPaper = fn(&ReproduceOptions, &ProgressFn<'_>) -> Result<Vec<ExperimentOutcome>>;
+
+/// A registered paper.
+pub struct Paper {
+    pub id: &'static str,
+    pub title: &'static str,
+    pub run: RunPaper,
+}
+
+pub const PAPERS: &[Paper] = &[Paper {
+    id: "baselines",
+    title: "PSO and GA (DE and a second GA reading for reference) on seed 002's benchmark functions, Tables 2 and 4",
+    run: baselines::run,
+}];
+
+pub fn paper(id: &str) -> Result<&'static Paper> {
+    PAPERS.iter().find(|p| p.id == id).ok_or_else(|| {
+        Error::input(
+            "PAPER",
+            format!("unknown paper '{id}' (known: {})", PAPERS.iter().map(|p| p.id).collect::<Vec<_>>().join(", ")),
+        )
+    })
+}
+
+/// Runs `paper` and writes DIR/REPORT.md, per-experiment results and figures.
+pub fn reproduce(
+    paper: &Paper,
+    opts: &ReproduceOptions,
+    dir: &Path,
+    progress: &(dyn Fn(usize, usize) + Sync),
+    figures: &dyn super::output::FigureRenderer,
+) -> Result<Vec<ExperimentOutcome>> {
+    if opts.runs < 2 {
+        return Err(Error::input("--runs", format!("needs at least 2 runs for statistics, got {}", opts.runs)));
+    }
+    let outcomes = (paper.run)(opts, progress)?;
+    super::output::in_output_dir("--out", dir, || report::write(paper, opts, &outcomes, dir, figures))?;
+    Ok(outcomes)
+}

@@ -1,0 +1,248 @@
+//! Convergence curves: best cost against iteration, one median line per series with an
+//! optional band (the interquartile range over repeated runs).
+//!
+//! The y axis switches to log10 when the costs span more than two decades, since early costs
+//! (often penalty-dominated) would otherwise flatten everything that happens later; it is then
+//! labelled at whole decades from end to end (see [`super::log_axis`]). Non-finite
+//! values (no feasible solution yet, failed runs) break the line instead of being invented.
+
+use std::ops::Range;
+
+use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::log_axis::{self, DecadeAxis, Decades};
+use super::style::{self, plot_err, LegendEntry, Swatch};
+use tidepath::error::Result;
+
+pub(crate) const Y_LABELS: usize = 7;
+
+/// One curve of a convergence plot: `median[i]` is the value at iteration i; `band`, when
+/// given, is (lower, upper) per iteration and is shaded behind the line.
+#[derive(Clone, Debug)]
+pub struct ConvergenceSeries<'a> {
+    pub label: String,
+    pub median: &'a [f64],
+    pub band: Option<(&'a [f64], &'a [f64])>,
+    /// Palette index ([`style::path_color`]); `None` takes the series' position in the list.
+    /// Set it when a series belongs to a path drawn elsewhere, so both share a colour.
+    pub color: Option<usize>,
+}
+
+impl<'a> ConvergenceSeries<'a> {
+    /// A single run's history: a line without a band.
+    pub fn line(label: impl Into<String>, values: &'a [f64]) -> Self {
+        Self { label: label.into(), median: values, band: None, color: None }
+    }
+}
+
+/// Whether a log10 axis reads better for `values`: all positive and spanning over two decades.
+pub fn wants_log_scale(values: impl IntoIterator<Item = f64>) -> bool {
+    let (mut lo, mut hi, mut any) = (f64::INFINITY, 0.0f64, false);
+    for v in values.into_iter().filter(|v| v.is_finite()) {
+        if v <= 0.0 {
+            return false;
+        }
+        lo = lo.min(v);
+        hi = hi.max(v);
+        any = true;
+    }
+    any && hi / lo > 100.0
+}
+
+fn series_color(i: usize, s: &ConvergenceSeries) -> RGBColor {
+    style::path_color(s.color.unwrap_or(i))
+}
+
+/// Maximal runs of consecutive indices where `ok` holds.
+fn runs(n: usize, ok: impl Fn(usize) -> bool) -> Vec<Range<usize>> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for i in 0..=n {
+        match (start, i < n && ok(i)) {
+            (None, true) => start = Some(i),
+            (Some(s), false) => {
+                out.push(s..i);
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+fn all_values<'a>(series: &'a [ConvergenceSeries]) -> impl Iterator<Item = f64> + 'a {
+    series.iter().flat_map(|s| {
+        let band = s.band.map(|(l, u)| l.iter().chain(u.iter())).into_iter().flatten();
+        s.median.iter().chain(band).copied()
+    })
+}
+
+/// Draws the convergence panel: one median line per series over its band, on a log10 axis
+/// when [`wants_log_scale`] says so.
+pub fn draw_convergence<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, series: &[ConvergenceSeries]) -> Result<()> {
+    let body = style::caption(area, "Convergence")?;
+    let finite: Vec<f64> = all_values(series).filter(|v| v.is_finite()).collect();
+    if finite.is_empty() {
+        let (w, h) = body.dim_in_pixel();
+        let msg = if series.is_empty() { "no convergence history" } else { "no finite cost recorded" };
+        let style = style::font(style::AXIS_DESC_PX).color(&style::MUTED).pos(Pos::new(HPos::Center, VPos::Center));
+        body.draw(&Text::new(msg, (w as i32 / 2, h as i32 / 3), style)).map_err(plot_err)?;
+        return Ok(());
+    }
+    let lo = finite.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let n = series.iter().map(|s| s.median.len()).max().unwrap_or(0);
+    let x_range = 0.0..(n.saturating_sub(1) as f64).max(1.0);
+
+    let mut legend: Vec<LegendEntry> = series
+        .iter()
+        .enumerate()
+        .map(|(i, s)| LegendEntry::new(&s.label, Swatch::Line { color: series_color(i, s).to_rgba(), width: 2 }))
+        .collect();
+    if series.iter().any(|s| s.band.is_some()) {
+        legend
+            .push(LegendEntry::new("interquartile range", Swatch::Fill { color: style::MUTED.mix(0.25), edge: None }));
+    }
+    let (w, _) = body.dim_in_pixel();
+    let legend_h = style::legend_height(&legend, w.saturating_sub(70));
+    let (legend_area, chart_area) = body.split_vertically(legend_h);
+    style::draw_legend(&legend_area.margin(0, 0, 70, 0), &legend)?;
+
+    if let Some(decades) = Decades::for_values(lo, hi).filter(|_| wants_log_scale(finite.iter().copied())) {
+        let y = DecadeAxis::new(decades);
+        let chart = build(&chart_area, x_range, y, "best cost (log scale)", |v: &f64| log_axis::label(*v))?;
+        draw_curves(chart, series)
+    } else {
+        let pad = if hi > lo { (hi - lo) * 0.05 } else { lo.abs().max(1.0) * 0.1 };
+        let y = (lo - pad)..(hi + pad);
+        let chart = build(&chart_area, x_range, y.clone(), "best cost", style::tick_formatter(y, Y_LABELS))?;
+        draw_curves(chart, series)
+    }
+}
+
+pub(crate) fn build<'a, DB, Y>(
+    area: &'a DrawingArea<DB, Shift>,
+    x: Range<f64>,
+    y: Y,
+    y_desc: &str,
+    y_fmt: impl Fn(&f64) -> String,
+) -> Result<ChartContext<'a, DB, Cartesian2d<RangedCoordf64, Y::CoordDescType>>>
+where
+    DB: DrawingBackend,
+    Y: AsRangedCoord<Value = f64>,
+    Y::CoordDescType: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    // Iterations are whole numbers: at most one label per iteration.
+    let x_labels = ((x.end - x.start).round() as usize + 1).min(8);
+    let mut chart = ChartBuilder::on(area)
+        .margin_right(18)
+        .margin_top(6)
+        .x_label_area_size(46)
+        .y_label_area_size(64)
+        .build_cartesian_2d(x, y)
+        .map_err(plot_err)?;
+    chart
+        .configure_mesh()
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(style::GRID)
+        .x_labels(x_labels)
+        .y_labels(Y_LABELS)
+        .x_desc("iteration")
+        .y_desc(y_desc)
+        .x_label_formatter(&|v: &f64| if v.fract().abs() < 1e-9 { format!("{v:.0}") } else { String::new() })
+        .y_label_formatter(&y_fmt)
+        .label_style(style::font(style::TICK_PX))
+        .axis_desc_style(style::font(style::AXIS_DESC_PX))
+        .draw()
+        .map_err(plot_err)?;
+    Ok(chart)
+}
+
+pub(crate) fn draw_curves<DB, Y>(
+    mut chart: ChartContext<DB, Cartesian2d<RangedCoordf64, Y>>,
+    series: &[ConvergenceSeries],
+) -> Result<()>
+where
+    DB: DrawingBackend,
+    Y: Ranged<ValueType = f64>,
+{
+    let (y_lo, y_hi) = {
+        let r = chart.y_range();
+        (r.start.min(r.end), r.start.max(r.end))
+    };
+    let y = |v: f64| v.clamp(y_lo, y_hi);
+    for (i, s) in series.iter().enumerate() {
+        let color = series_color(i, s);
+        if let Some((lower, upper)) = s.band {
+            let m = lower.len().min(upper.len());
+            let ok = |k: usize| lower[k].is_finite() && upper[k].is_finite();
+            for r in runs(m, ok) {
+                let mut poly: Vec<(f64, f64)> = r.clone().map(|k| (k as f64, y(upper[k]))).collect();
+                poly.extend(r.rev().map(|k| (k as f64, y(lower[k]))));
+                chart
+                    .draw_series(std::iter::once(Polygon::new(poly, style::fill(color.mix(0.2)))))
+                    .map_err(plot_err)?;
+            }
+        }
+        for r in runs(s.median.len(), |k| s.median[k].is_finite()) {
+            let pts: Vec<(f64, f64)> = r.map(|k| (k as f64, y(s.median[k]))).collect();
+            if pts.len() == 1 {
+                chart.draw_series(std::iter::once(Circle::new(pts[0], 3, style::fill(color)))).map_err(plot_err)?;
+            } else {
+                chart.draw_series(LineSeries::new(pts, style::line(color, 2))).map_err(plot_err)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn log_scale_only_for_positive_values_over_two_decades() {
+        assert!(wants_log_scale([1000.0, 50.0, 0.9, f64::INFINITY]));
+        assert!(!wants_log_scale([1000.0, 50.0, 20.0]));
+        assert!(!wants_log_scale([1000.0, 0.0, 0.001]));
+        assert!(!wants_log_scale([f64::NAN]));
+    }
+
+    #[test]
+    fn bands_render_behind_medians() {
+        let median: Vec<f64> = (0..60).map(|i| 5.0 + 300.0 * (-(i as f64) / 8.0).exp()).collect();
+        let lower: Vec<f64> = median.iter().map(|m| m * 0.7).collect();
+        let mut upper: Vec<f64> = median.iter().map(|m| m * 1.5).collect();
+        upper[10] = f64::INFINITY;
+        let other: Vec<f64> = median.iter().map(|m| m * 1.2 + 2.0).collect();
+        let series = [
+            ConvergenceSeries { label: "pso".into(), median: &median, band: Some((&lower, &upper)), color: None },
+            ConvergenceSeries { label: "de".into(), median: &other, band: Some((&lower, &other)), color: Some(3) },
+        ];
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (700, 420)).into_drawing_area();
+            root.fill(&WHITE).unwrap();
+            draw_convergence(&root, &series).unwrap();
+            root.present().unwrap();
+        }
+        // The infinite upper value splits the first band in two.
+        assert_eq!(svg.matches("<polygon").count(), 3);
+        assert!(svg.contains("interquartile range") && svg.contains("best cost (log scale)"));
+        assert!(!svg.contains("NaN"));
+        if let Some(dir) = std::env::var_os("TIDEPATH_PLOT_DIR") {
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(std::path::Path::new(&dir).join("convergence_bands.svg"), &svg).unwrap();
+        }
+    }
+
+    #[test]
+    fn runs_split_at_gaps() {
+        let v = [f64::INFINITY, 3.0, 2.0, f64::NAN, 1.0];
+        assert_eq!(runs(v.len(), |k| v[k].is_finite()), vec![1..3, 4..5]);
+    }
+}

@@ -1,0 +1,83 @@
+//! The single-plan figure: plan view on the left, profile and convergence on the right.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::convergence::{draw_convergence, ConvergenceSeries};
+use super::plan_view::draw_plan_view;
+use super::profile::draw_profile;
+use super::style::{self, plot_err};
+use super::PlotPath;
+use tidepath::error::{Error, Result};
+use tidepath::geom::Vec3;
+use tidepath::world::World;
+
+/// Width and height of the plan figure in pixels.
+pub const FIGURE_SIZE: (u32, u32) = (1400, 800);
+const TITLE_H: u32 = 40;
+
+/// Everything shown in the figure of one plan (or of several planners' plans on one world).
+#[derive(Clone, Debug)]
+pub struct PlanFigure<'a> {
+    /// Figure title, e.g. "demo — pso, seed 1: cost 1.234, feasible".
+    pub title: String,
+    pub world: &'a World,
+    pub start: Vec3,
+    pub goal: Vec3,
+    /// Time (s) at which obstacles and currents are drawn, normally the departure time.
+    pub time: f64,
+    /// One or more paths; they keep the same colour in every panel.
+    pub paths: Vec<PlotPath<'a>>,
+    /// Best cost per iteration, per label; a history labelled like a path gets its colour.
+    /// May be empty.
+    pub histories: Vec<(String, &'a [f64])>,
+}
+
+/// Renders the figure to SVG text.
+pub fn render_plan_figure(fig: &PlanFigure) -> Result<String> {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, FIGURE_SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let (w, h) = FIGURE_SIZE;
+        let title = style::bold(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Center));
+        root.draw(&Text::new(fig.title.clone(), (w as i32 / 2, TITLE_H as i32 / 2 + 2), title)).map_err(plot_err)?;
+        let body = root.split_vertically(TITLE_H).1.margin(0, 8, 8, 8);
+
+        // A wide domain gets a wider plan view; the right column keeps enough room to read.
+        let b = fig.world.bounds;
+        let aspect = ((b.max.x - b.min.x) / (b.max.y - b.min.y)).clamp(0.3, 3.0);
+        let avail_h = (h - TITLE_H) as f64 - 200.0;
+        let left_w = (aspect * avail_h + 200.0).clamp(540.0, 900.0) as u32;
+        let (left, right) = body.split_horizontally(left_w);
+        draw_plan_view(&left, fig.world, fig.time, &fig.paths, fig.start, fig.goal)?;
+
+        let right = right.margin(0, 0, 16, 0);
+        // A history takes the colour of the path with the same label, whatever the order.
+        let series: Vec<ConvergenceSeries> = fig
+            .histories
+            .iter()
+            .enumerate()
+            .map(|(i, (label, values))| ConvergenceSeries {
+                color: Some(fig.paths.iter().position(|p| &p.label == label).unwrap_or(i)),
+                ..ConvergenceSeries::line(label.clone(), values)
+            })
+            .collect();
+        // The same layout with or without a history, so figures of different runs line up;
+        // without one the convergence panel says so.
+        let (_, rh) = right.dim_in_pixel();
+        let (top, bottom) = right.split_vertically(rh / 2);
+        draw_profile(&top.margin(0, 10, 0, 0), fig.world, &fig.paths)?;
+        draw_convergence(&bottom.margin(10, 0, 0, 0), &series)?;
+        root.present().map_err(plot_err)?;
+    }
+    Ok(svg)
+}
+
+/// Renders the figure and writes it to `out` (an `.svg` file).
+pub fn write_plan_figure(fig: &PlanFigure, out: &Path) -> Result<()> {
+    let svg = render_plan_figure(fig)?;
+    std::fs::write(out, svg).map_err(|e| Error::io(out, e))
+}

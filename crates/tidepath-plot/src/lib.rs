@@ -1,0 +1,38 @@
+//! SVG figures of plans: plan view, vertical profile and convergence.
+//!
+//! Figures are SVG so the default build needs no system libraries (no fonts, no bitmap
+//! encoders): text is written as SVG `<text>` and rendered by the viewer. Each panel is a
+//! function drawing into any plotters [`DrawingArea`], so reports other than the single-plan
+//! figure (a comparison's paths, convergence bands) reuse the same panels and look the same.
+//!
+//! [`DrawingArea`]: plotters::drawing::DrawingArea
+
+pub mod contour;
+mod convergence;
+pub mod experiment;
+mod figure;
+mod log_axis;
+mod plan_view;
+mod profile;
+pub mod style;
+
+pub use convergence::{draw_convergence, wants_log_scale, ConvergenceSeries};
+pub use experiment::ExperimentFigures;
+pub use figure::{render_plan_figure, write_plan_figure, PlanFigure, FIGURE_SIZE};
+pub use plan_view::draw_plan_view;
+pub use profile::draw_profile;
+
+use tidepath::geom::Vec3;
+
+/// A labelled path to draw; borrowed so callers can plot plans without copying waypoints.
+#[derive(Clone, Debug)]
+pub struct PlotPath<'a> {
+    pub label: String,
+    pub points: &'a [Vec3],
+}
+
+impl<'a> PlotPath<'a> {
+    pub fn new(label: impl Into<String>, points: &'a [Vec3]) -> Self {
+        Self { label: label.into(), points }
+    }
+}
