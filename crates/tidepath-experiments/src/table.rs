@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 use super::stats::{compare_to_reference, Summary};
 use super::RunRecord;
 
-/// Significance level of the rank-sum marks (seed 001 uses 0.05).
+/// Significance level of the rank-sum marks (lfhh2019 uses 0.05).
 pub const ALPHA: f64 = 0.05;
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -26,7 +26,7 @@ pub struct PlannerRow {
     pub mean_evaluations: f64,
     /// Timing field: mean wall time per run (s).
     pub mean_wall_s: f64,
-    /// Runs whose cost is exactly 0, and below 1e-300 (seed 002's "0 times" columns).
+    /// Runs whose cost is exactly 0, and below 1e-300 (amfa2015's "0 times" columns).
     pub zeros_exact: usize,
     pub zeros_tiny: usize,
     /// Two-sided Wilcoxon rank-sum test against the first planner: `+` the first planner is

@@ -20,8 +20,8 @@ type MakeOptimizer = fn() -> Box<dyn Optimizer>;
 fn optimizers() -> Vec<(&'static str, MakeOptimizer, Option<f64>)> {
     vec![
         ("pso", || Box::new(Pso::new(PsoParams::default())), Some(1e-10)),
-        ("ga-real", || Box::new(Ga::new(GaParams::seed000())), None),
-        ("ga-binary", || Box::new(Ga::new(GaParams::seed002())), None),
+        ("ga-real", || Box::new(Ga::new(GaParams::wpa2017())), None),
+        ("ga-binary", || Box::new(Ga::new(GaParams::amfa2015())), None),
         ("de", || Box::new(De::new(DeParams::default())), Some(1e-10)),
     ]
 }

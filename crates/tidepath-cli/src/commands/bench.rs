@@ -18,7 +18,7 @@ pub struct BenchArgs {
 
 #[derive(Subcommand)]
 pub enum BenchWhat {
-    /// Benchmark functions (Sphere, Rastrigin, ...): the optimizer tests of seeds 000 and 002.
+    /// Benchmark functions (Sphere, Rastrigin, ...): the optimizer tests of wpa2017 and amfa2015.
     Functions(FunctionsArgs),
 }
 
@@ -26,12 +26,12 @@ pub enum BenchWhat {
 pub enum RangeKind {
     /// The standard domain of each function.
     Standard,
-    /// Seed 002 Table 1 (small ranges).
+    /// amfa2015 Table 1 (small ranges).
     Small,
-    /// Seed 002 Table 3 (wide ranges).
+    /// amfa2015 Table 3 (wide ranges).
     Wide,
-    /// Seed 000 Table 2: each function's own dimension and range (overrides --dim).
-    Seed000,
+    /// wpa2017 Table 2: each function's own dimension and range (overrides --dim).
+    Wpa2017,
 }
 
 #[derive(Args)]
@@ -93,12 +93,12 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
         })?;
         let mut dim = function.fixed_dim().unwrap_or(args.dim);
         let (lo, hi, tag) = match args.range {
-            RangeKind::Seed000 => {
+            RangeKind::Wpa2017 => {
                 let (d, lo, hi) = function
-                    .seed000_setting()
-                    .ok_or_else(|| Error::input("--range", format!("seed 000 gives no setting for {name}")))?;
+                    .wpa2017_setting()
+                    .ok_or_else(|| Error::input("--range", format!("wpa2017 gives no setting for {name}")))?;
                 dim = d;
-                (lo, hi, "seed000")
+                (lo, hi, "wpa2017")
             }
             RangeKind::Standard => {
                 let (lo, hi) = function.default_range(dim);
@@ -107,13 +107,13 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
             RangeKind::Small => {
                 let (lo, hi) = function
                     .small_range()
-                    .ok_or_else(|| Error::input("--range", format!("seed 002 gives no small range for {name}")))?;
+                    .ok_or_else(|| Error::input("--range", format!("amfa2015 gives no small range for {name}")))?;
                 (lo, hi, "small")
             }
             RangeKind::Wide => {
                 let (lo, hi) = function
                     .wide_range()
-                    .ok_or_else(|| Error::input("--range", format!("seed 002 gives no wide range for {name}")))?;
+                    .ok_or_else(|| Error::input("--range", format!("amfa2015 gives no wide range for {name}")))?;
                 (lo, hi, "wide")
             }
         };

@@ -1,4 +1,4 @@
-//! Seed 002 (Liu, Zhao, Gao & Liu 2015), Tables 2 and 4: the PSO and GA rows, with DE beside
+//! amfa2015 (Liu, Zhao, Gao & Liu 2015), Tables 2 and 4: the PSO and GA rows, with DE beside
 //! them for reference, and the GA under the other reading of its mutation rate. Six functions, D = 30, population 40, 60,000 evaluations, small
 //! (Table 1) and wide (Table 3) ranges. AMFA and FA join these tables in the firefly issue.
 
@@ -63,17 +63,17 @@ const TABLE4_GA: Rows = [
 ];
 
 /// The paper's settings: PSO w = 0.729, c1 = c2 = 1.494, V_max = X_max; GA binary, 20 bits,
-/// roulette, single-point crossover pc = 0.6, pm = 1/n per bit (ALGORITHMS.md 3.1); DE/rand/1/bin
+/// roulette, single-point crossover pc = 0.6, pm = 1/n per bit (docs/papers/shared.md#ga); DE/rand/1/bin
 /// F = 0.5, CR = 0.9 (ours, not in the paper). Population 40 for all.
 fn factory(id: &str) -> Result<Box<dyn Optimizer>> {
     Ok(match id {
-        "pso" => Box::new(Pso::new(PsoParams { population: POPULATION, ..PsoParams::seed002() })),
-        "ga" => Box::new(Ga::new(GaParams { population: POPULATION, ..GaParams::seed002() })),
+        "pso" => Box::new(Pso::new(PsoParams { population: POPULATION, ..PsoParams::amfa2015() })),
+        "ga" => Box::new(Ga::new(GaParams { population: POPULATION, ..GaParams::amfa2015() })),
         // The other reading of the paper's "pm = 1/n": once per chromosome of D x 20 bits.
         GA_PER_CHROMOSOME => Box::new(Ga::new(GaParams {
             population: POPULATION,
             mutation_rate: Some(1.0 / (DIM as f64 * 20.0)),
-            ..GaParams::seed002()
+            ..GaParams::amfa2015()
         })),
         "de" => Box::new(De::new(DeParams { population: POPULATION, ..DeParams::default() })),
         other => return Err(tidepath::error::Error::input("planner", format!("baselines has no planner '{other}'"))),
@@ -119,8 +119,8 @@ pub(super) fn run(opts: &ReproduceOptions, progress: &(dyn Fn(usize, usize) + Sy
     let budget = RunBudget { evaluations: Some(EVALUATIONS), population: Some(POPULATION), ..RunBudget::default() };
     let mut outcomes = Vec::new();
     let experiments = [
-        ("table2-small", "Table 2: small ranges", "small", "seed 002, Table 2", &TABLE2_PSO, &TABLE2_GA),
-        ("table4-wide", "Table 4: wide ranges", "wide", "seed 002, Table 4", &TABLE4_PSO, &TABLE4_GA),
+        ("table2-small", "Table 2: small ranges", "small", "amfa2015, Table 2", &TABLE2_PSO, &TABLE2_GA),
+        ("table4-wide", "Table 4: wide ranges", "wide", "amfa2015, Table 4", &TABLE4_PSO, &TABLE4_GA),
     ];
     let per_experiment = FUNCTIONS.len() * planners.len() * opts.runs as usize;
     let total = per_experiment * experiments.len();
@@ -128,7 +128,7 @@ pub(super) fn run(opts: &ReproduceOptions, progress: &(dyn Fn(usize, usize) + Sy
         let problems: Vec<FunctionProblem> = FUNCTIONS
             .iter()
             .map(|&f| {
-                let (lo, hi) = if range == "small" { f.small_range() } else { f.wide_range() }.expect("seed 002 range");
+                let (lo, hi) = if range == "small" { f.small_range() } else { f.wide_range() }.expect("amfa2015 range");
                 FunctionProblem {
                     function: f,
                     dim: DIM,
@@ -172,7 +172,7 @@ pub(super) fn run(opts: &ReproduceOptions, progress: &(dyn Fn(usize, usize) + Sy
         };
         let notes = vec![format!(
             "Mutation-rate reading: the GA's mean is within a factor of 10 of the paper's GA mean on {} of 6 \
-             functions with pm = 1/D per bit (`ga`, the reading ALGORITHMS.md prescribes) and on {} of 6 with \
+             functions with pm = 1/D per bit (`ga`, the reading docs/papers/shared.md#ga prescribes) and on {} of 6 with \
              pm = 1/(D x 20) per bit (`ga-pm-per-chromosome`).",
             within("ga"),
             within(GA_PER_CHROMOSOME)
@@ -186,7 +186,7 @@ pub(super) fn run(opts: &ReproduceOptions, progress: &(dyn Fn(usize, usize) + Sy
                 "D = {DIM}, population {POPULATION}, {EVALUATIONS} evaluations per run, {} runs. Ranges: {}. \
                  PSO: w = 0.729, c1 = c2 = 1.494, V_max = range (paper). GA: binary, 20 bits per variable, roulette \
                  selection, single-point crossover pc = 0.6, bit mutation pm = 1/D per bit (the paper's pm = 1/n read \
-                 per bit, ALGORITHMS.md 3.1), elitism 1 (ours; the paper is silent). `ga-pm-per-chromosome` is the same GA with the other \
+                 per bit, docs/papers/shared.md#ga), elitism 1 (ours; the paper is silent). `ga-pm-per-chromosome` is the same GA with the other \
                  reading of pm = 1/n, 1/(D x 20) per bit (about one flip per chromosome); it is shown to measure how \
                  much the reading matters and takes no part in the claims. DE/rand/1/bin, F = 0.5, CR = 0.9 \
                  is ours, for reference only. Functions use the standard definitions (the paper prints Griewank with \

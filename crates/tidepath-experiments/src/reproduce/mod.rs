@@ -52,7 +52,7 @@ pub struct Paper {
 
 pub const PAPERS: &[Paper] = &[Paper {
     id: "baselines",
-    title: "PSO and GA (DE and a second GA reading for reference) on seed 002's benchmark functions, Tables 2 and 4",
+    title: "PSO and GA (DE and a second GA reading for reference) on amfa2015's benchmark functions, Tables 2 and 4",
     run: baselines::run,
 }];
 

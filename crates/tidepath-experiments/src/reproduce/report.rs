@@ -23,7 +23,7 @@ pub struct PaperCell {
 
 #[derive(Clone, Debug, Default)]
 pub struct PaperTable {
-    /// Where the numbers are printed, e.g. "seed 002, Table 2".
+    /// Where the numbers are printed, e.g. "amfa2015, Table 2".
     pub source: String,
     pub cells: Vec<PaperCell>,
 }

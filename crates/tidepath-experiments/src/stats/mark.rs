@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use super::rank_sum::{test_without_nan, RankSumResult};
 
-/// The '+', '≈', '-' marks of the seed papers' tables.
+/// The '+', '≈', '-' marks of the papers' tables.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Mark {
     /// The reference planner is significantly better (lower costs).
@@ -33,7 +33,7 @@ impl fmt::Display for Mark {
     }
 }
 
-/// Marks `other` against the reference planner (the first planner listed) as seed 001 does:
+/// Marks `other` against the reference planner (the first planner listed) as lfhh2019 does:
 /// '+' means the reference is significantly better. Costs are minimised, so with `p < alpha`
 /// the mark is [`Mark::Better`] when the reference's U is below its null mean `n_r n_o / 2`
 /// (its mean rank is lower: its costs tend to be smaller) and [`Mark::Worse`] when above;

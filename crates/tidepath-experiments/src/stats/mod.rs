@@ -1,8 +1,8 @@
 //! Statistics for comparing planners over many seeded runs.
 //!
-//! The seed papers report each planner as best / mean / std / worst over 30 runs and mark every
+//! The papers report each planner as best / mean / std / worst over 30 runs and mark every
 //! competitor with '+', '≈' or '-' from a two-sided Wilcoxon rank-sum test at alpha = 0.05
-//! against the proposed method (seed 001 cites W. Haynes, "Wilcoxon Rank Sum Test", Springer
+//! against the proposed method (lfhh2019 cites W. Haynes, "Wilcoxon Rank Sum Test", Springer
 //! 2013). Tables built here must be checkable against R and scipy, so the test follows
 //! R's `wilcox.test` (two-sided, `exact = NULL`, `correct = TRUE`) closely:
 //!
@@ -38,7 +38,7 @@ pub use normal::{erfc, normal_cdf};
 pub use rank_sum::{rank_sum_test, Method, RankSumResult};
 pub use summary::Summary;
 
-/// Significance level used by the seed papers for the '+', '≈', '-' marks.
+/// Significance level used by the papers for the '+', '≈', '-' marks.
 pub const DEFAULT_ALPHA: f64 = 0.05;
 
 /// R's size rule for the exact test: both samples must have fewer than this many values.

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-/// Descriptive statistics of one planner's costs over its runs, as in the seed papers' tables.
+/// Descriptive statistics of one planner's costs over its runs, as in the papers' tables.
 ///
 /// NaN values are skipped (`n` counts only the values used). Infinite values are kept: `+inf`
 /// sorts last, so an infeasible run shows up as `worst = inf`; `mean` is then infinite (NaN if

@@ -1,6 +1,6 @@
-//! The free-waypoint encoding of seed 002 (section 4): n route points anywhere in the domain,
+//! The free-waypoint encoding of amfa2015 (section 4): n route points anywhere in the domain,
 //! visited in order between the fixed start and goal. Variables are normalised to [0, 1] per
-//! axis (ALGORITHMS.md 3.3: degrees and metres have very different scales), so one step size
+//! axis (docs/papers/amfa2015.md: degrees and metres have very different scales), so one step size
 //! suits every axis.
 
 use crate::error::{Error, Result};

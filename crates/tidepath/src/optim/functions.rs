@@ -1,14 +1,14 @@
-//! Benchmark functions used by seeds 000 (Zhang et al. 2017, MWPA, Table 2) and 002 (Liu et al.
-//! 2015, AMFA, Tables 1 and 3), with the standard definitions of `ALGORITHMS.md` section 0.1.
+//! Benchmark functions used by wpa2017 (Zhang et al. 2017, MWPA, Table 2) and 002 (Liu et al.
+//! 2015, AMFA, Tables 1 and 3), with the standard definitions of docs/papers/shared.md#benchmark-functions.
 //!
-//! The papers' printed formulas are not copied where they are wrong: seed 002 prints Griewank
+//! The papers' printed formulas are not copied where they are wrong: amfa2015 prints Griewank
 //! with Rosenbrock's formula (we use the standard Griewank), and prints Rosenbrock as
-//! `100(x_i^2 - x_{i+1})^2 + (x_i - 1)^2`, which is the same function. Seed 000's "Easorm" and
+//! `100(x_i^2 - x_{i+1})^2 + (x_i - 1)^2`, which is the same function. wpa2017's "Easorm" and
 //! "Rastrigrn" are Easom and Rastrigin.
 //!
 //! Ranges: [`Function::default_range`] is the usual domain; [`Function::small_range`] and
-//! [`Function::wide_range`] are seed 002's Table 1 and Table 3 (for reproduction);
-//! [`Function::seed000_setting`] is seed 000's Table 2 (dimension and range).
+//! [`Function::wide_range`] are amfa2015's Table 1 and Table 3 (for reproduction);
+//! [`Function::wpa2017_setting`] is wpa2017's Table 2 (dimension and range).
 
 use super::{Objective, Scratch};
 
@@ -192,10 +192,10 @@ impl Function {
         }
     }
 
-    /// Seed 002, Table 1 ("small range"), for the six functions it uses; `None` otherwise.
+    /// amfa2015, Table 1 ("small range"), for the six functions it uses; `None` otherwise.
     ///
     /// Note: the printed Ackley range [-2.768, 2.768] (and Griewank's [-8, 8]) are not the usual
-    /// ones; they are kept for reproduction. See [`Function::seed002_range_note`].
+    /// ones; they are kept for reproduction. See [`Function::amfa2015_range_note`].
     pub fn small_range(&self) -> Option<(f64, f64)> {
         match self {
             Function::Sphere | Function::Rastrigin => Some((-5.12, 5.12)),
@@ -207,10 +207,10 @@ impl Function {
         }
     }
 
-    /// Seed 002, Table 3 ("wide range"), for the six functions it uses; `None` otherwise.
+    /// amfa2015, Table 3 ("wide range"), for the six functions it uses; `None` otherwise.
     ///
     /// Note: the printed Ackley range [-23.768, 23.768] is not the usual [-32.768, 32.768]; it
-    /// is kept for reproduction. See [`Function::seed002_range_note`].
+    /// is kept for reproduction. See [`Function::amfa2015_range_note`].
     pub fn wide_range(&self) -> Option<(f64, f64)> {
         match self {
             Function::Sphere | Function::Rosenbrock | Function::Rastrigin => Some((-100.0, 100.0)),
@@ -221,25 +221,25 @@ impl Function {
         }
     }
 
-    /// A warning to print next to results obtained on seed 002's ranges when those ranges are
+    /// A warning to print next to results obtained on amfa2015's ranges when those ranges are
     /// not the usual ones (Ackley, and Griewank's small range).
-    pub fn seed002_range_note(&self) -> Option<&'static str> {
+    pub fn amfa2015_range_note(&self) -> Option<&'static str> {
         match self {
             Function::Ackley => Some(
-                "seed 002 prints Ackley ranges [-2.768, 2.768] and [-23.768, 23.768]; the usual domain is \
+                "amfa2015 prints Ackley ranges [-2.768, 2.768] and [-23.768, 23.768]; the usual domain is \
                  [-32.768, 32.768]. The printed ranges are used for reproduction.",
             ),
             Function::Griewank => {
-                Some("seed 002's small Griewank range [-8, 8] is unusual (the usual domain is [-600, 600]).")
+                Some("amfa2015's small Griewank range [-8, 8] is unusual (the usual domain is [-600, 600]).")
             }
             _ => None,
         }
     }
 
-    /// Seed 000, Table 2: `(dimension, lower, upper)` for Easom (2, [-100, 100]), Trid6
+    /// wpa2017, Table 2: `(dimension, lower, upper)` for Easom (2, [-100, 100]), Trid6
     /// (6, [-36, 36]), Sphere (30, [-1.5, 1.5]), Rastrigin (60, [-10, 10]) and Quadric
-    /// (120, [-30, 30]); `None` for the functions seed 000 does not use.
-    pub fn seed000_setting(&self) -> Option<(usize, f64, f64)> {
+    /// (120, [-30, 30]); `None` for the functions wpa2017 does not use.
+    pub fn wpa2017_setting(&self) -> Option<(usize, f64, f64)> {
         match self {
             Function::Easom => Some((2, -100.0, 100.0)),
             Function::Trid => Some((6, -36.0, 36.0)),
@@ -372,18 +372,18 @@ mod tests {
         assert_eq!(Function::Ackley.small_range(), Some((-2.768, 2.768)));
         assert_eq!(Function::Ackley.wide_range(), Some((-23.768, 23.768)));
         assert_eq!(Function::Ackley.default_range(30), (-32.768, 32.768));
-        assert!(Function::Ackley.seed002_range_note().is_some());
+        assert!(Function::Ackley.amfa2015_range_note().is_some());
         assert_eq!(Function::Zakharov.wide_range(), Some((-50.0, 100.0)));
         assert_eq!(Function::Griewank.small_range(), Some((-8.0, 8.0)));
         assert_eq!(Function::Trid.default_range(6), (-36.0, 36.0));
-        assert_eq!(Function::Trid.seed000_setting(), Some((6, -36.0, 36.0)));
-        assert_eq!(Function::Quadric.seed000_setting(), Some((120, -30.0, 30.0)));
-        assert_eq!(Function::Zakharov.seed000_setting(), None);
+        assert_eq!(Function::Trid.wpa2017_setting(), Some((6, -36.0, 36.0)));
+        assert_eq!(Function::Quadric.wpa2017_setting(), Some((120, -30.0, 30.0)));
+        assert_eq!(Function::Zakharov.wpa2017_setting(), None);
         assert_eq!(Function::Easom.small_range(), None);
         for f in Function::ALL {
-            if let Some((d, lo, hi)) = f.seed000_setting() {
+            if let Some((d, lo, hi)) = f.wpa2017_setting() {
                 let x = f.optimum_point(d);
-                assert!(x.iter().all(|v| (lo..=hi).contains(v)), "{f}: optimum outside seed 000 box");
+                assert!(x.iter().all(|v| (lo..=hi).contains(v)), "{f}: optimum outside wpa2017 box");
             }
         }
     }

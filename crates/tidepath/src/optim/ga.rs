@@ -3,17 +3,17 @@
 //! The skeleton is Holland's / Goldberg's simple GA (Goldberg, "Genetic Algorithms in Search,
 //! Optimization and Machine Learning", 1989, ch. 3): fitness-proportionate (roulette) selection
 //! of parent pairs, crossover with probability `pc`, mutation, generational replacement, plus
-//! elitism. The two codings reproduce the GA baselines of the seed papers (`ALGORITHMS.md`
-//! sections 1.7 and 3.1):
+//! elitism. The two codings reproduce the GA baselines of the papers (our readings in
+//! docs/papers/wpa2017.md and docs/papers/shared.md#ga):
 //!
-//! * `coding = "real"` — seed 000 (Zhang et al. 2017, Table 3: pc = 0.8, roulette, "random
-//!   multi-point crossover"; the rest is Chosen in section 1.7): population 50, two-point
+//! * `coding = "real"` — wpa2017 (Zhang et al. 2017, Table 3: pc = 0.8, roulette, "random
+//!   multi-point crossover"; the rest is our choice, docs/papers/wpa2017.md): population 50, two-point
 //!   crossover with probability 0.8, each gene mutated with probability 1/D by a Gaussian step
 //!   `N(0, (0.1 x range)^2)`, then clamped to the box.
-//! * `coding = "binary"` — seed 002 (Liu et al. 2015, section 5): 20 bits per variable, roulette,
+//! * `coding = "binary"` — amfa2015 (Liu et al. 2015, section 5): 20 bits per variable, roulette,
 //!   single-point crossover over the whole chromosome with pc = 0.6, bit-flip mutation with
-//!   probability pm = 1/D applied to every bit (D = number of variables; "per bit" is Chosen in
-//!   section 3.1), population 40. Variable `v` decodes as
+//!   probability pm = 1/D applied to every bit (D = number of variables; "per bit" is our reading,
+//!   docs/papers/shared.md#ga), population 40. Variable `v` decodes as
 //!   `x_v = lo_v + (hi_v - lo_v) k_v / (2^bits - 1)`, `k_v` the plain (not Gray) binary integer
 //!   of its bits, most significant bit first in the chromosome.
 //!
@@ -64,14 +64,14 @@ pub const PARAMS: &[Param] = &[
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum GaCoding {
-    /// Real-valued genes (seed 000).
+    /// Real-valued genes (wpa2017).
     #[default]
     Real,
-    /// `bits` bits per variable (seed 002).
+    /// `bits` bits per variable (amfa2015).
     Binary,
 }
 
-/// GA parameters. Defaults: seed 000's real-coded GA.
+/// GA parameters. Defaults: wpa2017's real-coded GA.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct GaParams {
@@ -94,14 +94,14 @@ pub struct GaParams {
 
 impl Default for GaParams {
     fn default() -> Self {
-        Self::seed000()
+        Self::wpa2017()
     }
 }
 
 impl GaParams {
-    /// Seed 000 (section 1.7 reading): real coding, 50 individuals, two-point crossover with
+    /// wpa2017 (our reading, docs/papers/wpa2017.md): real coding, 50 individuals, two-point crossover with
     /// pc = 0.8, Gaussian mutation with probability 1/D and sigma = 0.1 x range, elitism 1.
-    pub fn seed000() -> Self {
+    pub fn wpa2017() -> Self {
         Self {
             coding: GaCoding::Real,
             population: 50,
@@ -113,9 +113,9 @@ impl GaParams {
         }
     }
 
-    /// Seed 002: binary coding with 20 bits per variable, 40 individuals, single-point
+    /// amfa2015: binary coding with 20 bits per variable, 40 individuals, single-point
     /// crossover with pc = 0.6, bit-flip mutation with pm = 1/D per bit, elitism 1 (Chosen).
-    pub fn seed002() -> Self {
+    pub fn amfa2015() -> Self {
         Self {
             coding: GaCoding::Binary,
             population: 40,
@@ -478,12 +478,12 @@ mod tests {
     #[test]
     fn defaults_presets_and_check() {
         let p = GaParams::default();
-        assert_eq!(p, GaParams::seed000());
+        assert_eq!(p, GaParams::wpa2017());
         assert_eq!(
             (p.coding, p.population, p.crossover_rate, p.mutation_rate, p.bits, p.elitism, p.sigma_fraction),
             (GaCoding::Real, 50, 0.8, None, 20, 1, 0.1)
         );
-        let q = GaParams::seed002();
+        let q = GaParams::amfa2015();
         assert_eq!((q.coding, q.population, q.crossover_rate, q.bits), (GaCoding::Binary, 40, 0.6, 20));
         assert!(p.check().is_ok() && q.check().is_ok());
         for bad in [
@@ -545,7 +545,7 @@ mod tests {
 
     #[test]
     fn both_codings_improve_and_keep_the_elite() {
-        for params in [GaParams::seed000(), GaParams::seed002()] {
+        for params in [GaParams::wpa2017(), GaParams::amfa2015()] {
             let obj = FunctionObjective::new(Function::Sphere, 4, -5.12, 5.12);
             let mut ga = Ga::new(params.clone());
             let r = run(

@@ -13,11 +13,11 @@
 //! iterations (Shi & Eberhart 1999, "Empirical study of particle swarm optimization"), or
 //! constant when no schedule is given.
 //!
-//! Parameter sets of the seed papers (`ALGORITHMS.md` sections 1.7, 3.1 and 4.5):
-//! * seed 000 (Zhang et al. 2017, Table 3): w = 0.7, c1 = c2 = 2, 50 particles, vmax = range;
-//! * seed 002 (Liu et al. 2015, section 5, after Li et al.): w = 0.729, c1 = c2 = 1.494,
+//! Parameter sets of the papers (docs/papers/wpa2017.md, amfa2015.md and ijs2023.md):
+//! * wpa2017 (Zhang et al. 2017, Table 3): w = 0.7, c1 = c2 = 2, 50 particles, vmax = range;
+//! * amfa2015 (Liu et al. 2015, section 5, after Li et al.): w = 0.729, c1 = c2 = 1.494,
 //!   vmax = range, 40 particles (the defaults);
-//! * seed 003 (Guo et al., baselines): w 0.9 -> 0.4 linearly, c1 = c2 = 2, vmax = 0.2 x range,
+//! * ijs2023 (Guo et al., baselines): w 0.9 -> 0.4 linearly, c1 = c2 = 2, vmax = 0.2 x range,
 //!   45 particles.
 //!
 //! Choices (not fixed by the papers):
@@ -55,7 +55,7 @@ pub const PARAMS: &[Param] = &[
     },
 ];
 
-/// PSO parameters. Defaults: seed 002's set (see the module documentation).
+/// PSO parameters. Defaults: amfa2015's set (see the module documentation).
 
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -79,13 +79,13 @@ pub struct PsoParams {
 
 impl Default for PsoParams {
     fn default() -> Self {
-        Self::seed002()
+        Self::amfa2015()
     }
 }
 
 impl PsoParams {
-    /// Seed 000 (Zhang et al. 2017, Table 3): w = 0.7, c1 = c2 = 2, 50 particles, vmax = range.
-    pub fn seed000() -> Self {
+    /// wpa2017 (Zhang et al. 2017, Table 3): w = 0.7, c1 = c2 = 2, 50 particles, vmax = range.
+    pub fn wpa2017() -> Self {
         Self {
             population: 50,
             w_start: 0.7,
@@ -97,9 +97,9 @@ impl PsoParams {
         }
     }
 
-    /// Seed 002 (Liu et al. 2015, section 5): w = 0.729, c1 = c2 = 1.494, 40 particles,
+    /// amfa2015 (Liu et al. 2015, section 5): w = 0.729, c1 = c2 = 1.494, 40 particles,
     /// vmax = range. The default.
-    pub fn seed002() -> Self {
+    pub fn amfa2015() -> Self {
         Self {
             population: 40,
             w_start: 0.729,
@@ -111,9 +111,9 @@ impl PsoParams {
         }
     }
 
-    /// Seed 003's baseline (Guo et al.): w 0.9 -> 0.4 linearly over `iterations`, c1 = c2 = 2,
+    /// ijs2023's baseline (Guo et al.): w 0.9 -> 0.4 linearly over `iterations`, c1 = c2 = 2,
     /// vmax = 0.2 x range, 45 particles.
-    pub fn seed003(iterations: u64) -> Self {
+    pub fn ijs2023(iterations: u64) -> Self {
         Self {
             population: 45,
             w_start: 0.9,
@@ -310,20 +310,20 @@ mod tests {
     #[test]
     fn defaults_and_presets() {
         let p = PsoParams::default();
-        assert_eq!(p, PsoParams::seed002());
+        assert_eq!(p, PsoParams::amfa2015());
         assert_eq!(
             (p.population, p.w_start, p.w_end, p.c1, p.c2, p.vmax_fraction),
             (40, 0.729, 0.729, 1.494, 1.494, 1.0)
         );
         assert!(p.check().is_ok());
-        assert!(PsoParams::seed000().check().is_ok());
-        let p3 = PsoParams::seed003(500);
+        assert!(PsoParams::wpa2017().check().is_ok());
+        let p3 = PsoParams::ijs2023(500);
         assert!(p3.check().is_ok());
         assert_eq!(p3.inertia(0), 0.9);
         assert!((p3.inertia(250) - 0.65).abs() < 1e-12);
         assert_eq!(p3.inertia(500), 0.4);
         assert_eq!(p3.inertia(10_000), 0.4);
-        assert_eq!(PsoParams::seed000().inertia(123), 0.7);
+        assert_eq!(PsoParams::wpa2017().inertia(123), 0.7);
     }
 
     #[test]
@@ -348,8 +348,8 @@ mod tests {
         let p: PsoParams = serde_json::from_str(r#"{"population": 10}"#).unwrap();
         assert_eq!(p, PsoParams { population: 10, ..PsoParams::default() });
         assert!(serde_json::from_str::<PsoParams>(r#"{"inertia": 0.5}"#).is_err());
-        let back: PsoParams = serde_json::from_str(&serde_json::to_string(&PsoParams::seed003(7)).unwrap()).unwrap();
-        assert_eq!(back, PsoParams::seed003(7));
+        let back: PsoParams = serde_json::from_str(&serde_json::to_string(&PsoParams::ijs2023(7)).unwrap()).unwrap();
+        assert_eq!(back, PsoParams::ijs2023(7));
     }
 
     #[test]

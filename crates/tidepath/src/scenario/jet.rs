@@ -1,4 +1,4 @@
-//! Scenario support for seed 003's meandering jet.
+//! Scenario support for ijs2023's meandering jet.
 
 use super::spec::JetSpec;
 use crate::error::{Error, Result};

@@ -68,7 +68,7 @@ pub struct BoundsSpec {
 pub enum TerrainSpec {
     #[default]
     None,
-    /// Base level plus Gaussian peaks (seed 000 eq. 1, seed 001 eq. 11).
+    /// Base level plus Gaussian peaks (wpa2017 eq. 1, lfhh2019 eq. 11).
     Peaks {
         base: f64,
         #[serde(default)]
@@ -136,11 +136,11 @@ pub enum CurrentSpec {
     Uniform {
         velocity: P3,
     },
-    /// Lamb-Oseen vortices (seed 001 eqs. 3-5).
+    /// Lamb-Oseen vortices (lfhh2019 eqs. 3-5).
     Vortices {
         vortices: Vec<VortexSpec>,
     },
-    /// Seed 003's meandering jet mapped onto `region` (defaults to the domain rectangle).
+    /// ijs2023's meandering jet mapped onto `region` (defaults to the domain rectangle).
     Jet(JetSpec),
     /// u, v on a regular grid at several times; bilinear in space, linear in time.
     Grid {
@@ -168,7 +168,7 @@ pub struct JetSpec {
     /// [x_min, y_min, x_max, y_max] of the world rectangle the jet is mapped onto.
     #[serde(default)]
     pub region: Option<[f64; 4]>,
-    /// Current speed (m/s) everywhere, direction from the jet (seed 003's |v_c| = ratio |v|).
+    /// Current speed (m/s) everywhere, direction from the jet (ijs2023's |v_c| = ratio |v|).
     #[serde(default)]
     pub speed: Option<f64>,
     /// Alternatively scale so the jet's fastest point moves at this speed (m/s).
@@ -177,7 +177,7 @@ pub struct JetSpec {
     /// Seconds per jet time unit (default 2000).
     #[serde(default)]
     pub time_scale: Option<f64>,
-    /// Overrides of the jet's constants (defaults: ALGORITHMS.md section 0.3).
+    /// Overrides of the jet's constants (defaults: docs/papers/shared.md#meandering-jet).
     #[serde(default)]
     pub kappa: Option<f64>,
     #[serde(default)]

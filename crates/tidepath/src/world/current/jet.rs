@@ -1,4 +1,4 @@
-//! The time-varying meandering jet of seed 003 and the configuration that maps it onto the world.
+//! The time-varying meandering jet of ijs2023 and the configuration that maps it onto the world.
 
 use crate::error::{Error, Result};
 use crate::geom::{Aabb, Vec3};
@@ -6,15 +6,15 @@ use std::f64::consts::FRAC_PI_2;
 
 /// How the meandering jet's speed is turned into metres per second.
 ///
-/// The jet is non-dimensional, so its own speed says nothing about a real ocean; seed 003 only
+/// The jet is non-dimensional, so its own speed says nothing about a real ocean; ijs2023 only
 /// borrows its direction and states the magnitude relative to the AUV's speed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Magnitude {
     /// Every point where the jet flows (jet-unit speed > 1e-12) gets exactly this speed (m/s):
-    /// seed 003's literal "|v_c| = ratio x |v_rc|" (ALGORITHMS.md 4.2).
+    /// ijs2023's literal "|v_c| = ratio x |v_rc|" (docs/papers/ijs2023.md).
     Fixed(f64),
     /// The fastest point of the domain at t = 0 gets this speed (m/s) and the rest keep their
-    /// relative strength: ALGORITHMS.md 4.2's option "scale so that the maximum equals the
+    /// relative strength: docs/papers/ijs2023.md's option "scale so that the maximum equals the
     /// ratio". The maximum is sampled once on a 200 x 120 grid at t = 0, so between the sample
     /// points (by about 0.1 %) and as the jet breathes at later times the speed can exceed this.
     Scaled(f64),
@@ -50,14 +50,14 @@ pub struct JetConfig {
     /// Jet-unit interval that [y_min, y_max] maps onto. Chosen [-3, 3]: the jet core and both
     /// recirculation flanks.
     pub jet_y: [f64; 2],
-    /// Seconds of world time per jet time unit. Chosen 2000 (t_jet = t / 2000): seed 003's
+    /// Seconds of world time per jet time unit. Chosen 2000 (t_jet = t / 2000): ijs2023's
     /// missions last about 26 000 s, so the jet changes visibly but not wildly along a path.
     pub seconds_per_unit: f64,
     pub magnitude: Magnitude,
 }
 
 impl JetConfig {
-    /// The Chosen constants of ALGORITHMS.md 0.3 stretched over the given world rectangle.
+    /// The constants chosen in docs/papers/shared.md#meandering-jet stretched over the given world rectangle.
     pub fn new(x_min: f64, x_max: f64, y_min: f64, y_max: f64, magnitude: Magnitude) -> Self {
         Self {
             kappa: 1.0,
@@ -84,8 +84,8 @@ impl JetConfig {
     }
 }
 
-/// The time-varying meandering jet of seed 003 (Guo, Chen & Pang, IEEE Access; eqs. 27-28,
-/// ALGORITHMS.md section 0.3), mapped from jet units onto a rectangle of the world.
+/// The time-varying meandering jet of ijs2023 (Guo, Chen & Pang, IEEE Access; eqs. 27-28,
+/// docs/papers/shared.md#meandering-jet), mapped from jet units onto a rectangle of the world.
 ///
 /// Stream function (eq. 27) xi = 1 - tanh((y - a cos(kappa (x - eps t))) /
 /// sqrt(1 + (eta a sin(kappa (x - eps t)))^2)), with a(t) = alpha0 - beta cos(omega0 t + gamma)
@@ -247,7 +247,7 @@ impl MeanderingJet {
         (sech2 * inv_d, -sech2 * ds_dx)
     }
 
-    /// World velocity (m/s) at `p` and time `t` (s); horizontal only, as in seed 003.
+    /// World velocity (m/s) at `p` and time `t` (s); horizontal only, as in ijs2023.
     #[inline]
     pub fn velocity(&self, p: Vec3, t: f64) -> Vec3 {
         let (xj, yj, tj) = self.to_jet(p.x, p.y, t);

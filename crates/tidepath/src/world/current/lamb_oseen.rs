@@ -3,7 +3,7 @@
 use crate::geom::Vec2;
 use std::f64::consts::TAU;
 
-/// One Lamb-Oseen vortex (seed 001 eqs. 3-5, ALGORITHMS.md section 0.2).
+/// One Lamb-Oseen vortex (lfhh2019 eqs. 3-5, docs/papers/shared.md#lamb-oseen).
 #[derive(Clone, Debug, PartialEq)]
 pub struct LambOseen {
     pub x: f64,

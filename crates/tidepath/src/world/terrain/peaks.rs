@@ -1,9 +1,9 @@
-//! Analytic seabed: a base level plus Gaussian peaks (seeds 000 and 001).
+//! Analytic seabed: a base level plus Gaussian peaks (wpa2017 and 001).
 
 use crate::error::{Error, Result};
 
 /// One Gaussian peak: height `h` above the base at (x, y), widths `sigma_x`, `sigma_y`:
-/// h exp(-((x - x_j)/sigma_x)^2 - ((y - y_j)/sigma_y)^2)  (seed 000 eq. 1 with sigma = x_j / k).
+/// h exp(-((x - x_j)/sigma_x)^2 - ((y - y_j)/sigma_y)^2)  (wpa2017 eq. 1 with sigma = x_j / k).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Peak {
     pub x: f64,
@@ -14,7 +14,7 @@ pub struct Peak {
 }
 
 /// Analytic seabed: base level plus a sum of Gaussian peaks, optionally capped at a ceiling
-/// (seed 000 eq. 1 caps the terrain at h_max).
+/// (wpa2017 eq. 1 caps the terrain at h_max).
 #[derive(Clone, Debug, PartialEq)]
 pub struct GaussianPeaks {
     pub base: f64,
@@ -23,14 +23,14 @@ pub struct GaussianPeaks {
 }
 
 impl Peak {
-    /// Seed 000 eq. 1 writes the exponent as (k_x (x - x_j) / x_j)^2: the peak's own centre
-    /// coordinate sets its width, sigma_x = x_j / k_x (ALGORITHMS.md 1.2). That only makes
+    /// wpa2017 eq. 1 writes the exponent as (k_x (x - x_j) / x_j)^2: the peak's own centre
+    /// coordinate sets its width, sigma_x = x_j / k_x (docs/papers/wpa2017.md). That only makes
     /// sense for centres at positive coordinates and positive k, so anything else is rejected.
     pub fn from_paper_k(x: f64, y: f64, height: f64, k_x: f64, k_y: f64, field: &str) -> Result<Self> {
         if !(x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite()) {
             return Err(Error::input(
                 format!("{field}.center"),
-                format!("seed 000 peak widths are x_j / k, so the centre must be positive and finite, got [{x}, {y}]"),
+                format!("wpa2017 peak widths are x_j / k, so the centre must be positive and finite, got [{x}, {y}]"),
             ));
         }
         if !(k_x > 0.0 && k_y > 0.0 && k_x.is_finite() && k_y.is_finite()) {
@@ -42,7 +42,7 @@ impl Peak {
         Ok(Self { x, y, height, sigma_x: x / k_x, sigma_y: y / k_y })
     }
 
-    /// Seed 001 eq. 11, Z = h exp(-((Y - y0)^2 a^2 + (X - x0)^2 b^2) / (2 sigma^2)), is the
+    /// lfhh2019 eq. 11, Z = h exp(-((Y - y0)^2 a^2 + (X - x0)^2 b^2) / (2 sigma^2)), is the
     /// same Gaussian with sigma_x = sqrt(2) sigma / b and sigma_y = sqrt(2) sigma / a.
     pub fn from_seabed_eq11(x0: f64, y0: f64, h: f64, a: f64, b: f64, sigma: f64, field: &str) -> Result<Self> {
         if !(x0.is_finite() && y0.is_finite() && h.is_finite()) {
@@ -72,7 +72,7 @@ impl Peak {
 }
 
 impl GaussianPeaks {
-    /// The terrain of seed 000 eq. 1 from its own parameters: base h0, peaks given as
+    /// The terrain of wpa2017 eq. 1 from its own parameters: base h0, peaks given as
     /// `[x_j, y_j, h_j, k_x, k_y]`, and the cap h_max (see [`Peak::from_paper_k`]).
     pub fn from_paper_k(h0: f64, peaks: &[[f64; 5]], h_max: Option<f64>, field: &str) -> Result<Self> {
         if !h0.is_finite() {
