@@ -1,0 +1,50 @@
+//! "Is there any route at all?": iterative flood fill on a [`SearchGrid`].
+//!
+//! Uses the same moves as A* (no corner cutting), so `connected` is true iff A*
+//! with any finite costs finds a path. Iterative (explicit stack, no recursion)
+//! and bounded: each cell is pushed at most once.
+
+use crate::arena::SearchArena;
+use crate::astar::check_endpoints;
+use crate::grid::SearchGrid;
+use crate::SearchError;
+
+/// `true` iff `goal` can be reached from `start` (fresh buffers).
+/// Works for [`crate::Grid2`] (8-connected) and [`crate::Grid3`] (26-connected).
+/// Errors like [`crate::astar`] on a blocked or out-of-range start or goal.
+pub fn connected<G: SearchGrid>(grid: &G, start: usize, goal: usize) -> Result<bool, SearchError> {
+    connected_in(&mut SearchArena::new(), grid, start, goal)
+}
+
+/// [`connected`] reusing `arena`.
+pub fn connected_in<G: SearchGrid>(
+    arena: &mut SearchArena,
+    grid: &G,
+    start: usize,
+    goal: usize,
+) -> Result<bool, SearchError> {
+    check_endpoints(grid, start, goal)?;
+    if start == goal {
+        return Ok(true);
+    }
+    arena.reset_closed(grid.cell_count());
+    arena.stack.clear();
+    arena.close(start);
+    arena.stack.push(start as u32);
+    let SearchArena { closed, stack, .. } = arena;
+    let mut found = false;
+    while let Some(u) = stack.pop() {
+        grid.for_each_neighbour(u as usize, |v| {
+            let (w, bit) = (v >> 6, 1u64 << (v & 63));
+            if closed[w] & bit == 0 {
+                closed[w] |= bit;
+                found |= v == goal;
+                stack.push(v as u32);
+            }
+        });
+        if found {
+            return Ok(true);
+        }
+    }
+    Ok(false)
+}

@@ -1,0 +1,382 @@
+//! Occupancy grids: 8-connected [`Grid2`] and 26-connected [`Grid3`].
+//!
+//! # Connectivity rule (no corner cutting)
+//!
+//! A move from cell `c` by the offset `d` (each component in `{-1, 0, 1}`, not all
+//! zero) is allowed iff **every cell of the axis-aligned box spanned by `c` and
+//! `c + d` is free**, i.e. every cell `c + e` with `e_a ∈ {0, d_a}` for each axis `a`.
+//!
+//! * Orthogonal move: the box is the two cells themselves.
+//! * 2-D diagonal `(±1, ±1)`: the box is 2×2, so both orthogonal neighbours
+//!   must be free — a diagonal never squeezes between two blocked cells that touch
+//!   at a corner, nor clips the corner of a single blocked cell.
+//! * 3-D face diagonal (two non-zero components): a 2×2×1 box (4 cells).
+//! * 3-D space diagonal (three non-zero components): the 2×2×2 box (8 cells).
+//!
+//! The rule is exactly "the straight segment between the two cell centres touches
+//! only free cells (closed cells, corners and edges included)", which is the
+//! line-of-sight rule of [`crate::los`]; so every grid move is a visible segment
+//! and Theta* can always fall back to the grid move.
+//!
+//! Cells are flat `usize` indices: `i + nx * j` in 2-D, `i + nx * (j + ny * k)` in 3-D.
+//! Cell size is the caller's concern: costs come from closures.
+
+use std::sync::OnceLock;
+
+use crate::SearchError;
+
+/// Largest supported number of cells (2^31): parents are stored as `u32` with
+/// `u32::MAX` as "none", and 2^31 cells already need 8 GiB for the g-scores.
+pub const MAX_CELLS: usize = 1 << 31;
+
+/// A grid the searches can run on.
+pub trait SearchGrid {
+    /// Number of cells; valid cells are `0..cell_count()`.
+    fn cell_count(&self) -> usize;
+    /// `true` when the cell cannot be entered.
+    fn is_blocked(&self, cell: usize) -> bool;
+    /// Calls `f(neighbour)` for every allowed move out of `cell` (see the module
+    /// docs for the rule), in a fixed order. `cell` itself must be free.
+    fn for_each_neighbour<F: FnMut(usize)>(&self, cell: usize, f: F);
+}
+
+fn check_dims(dims: &[usize]) -> Result<usize, SearchError> {
+    let cells = dims.iter().fold(1u128, |acc, &d| acc.saturating_mul(d as u128));
+    if cells == 0 || cells > MAX_CELLS as u128 {
+        let dims = dims.iter().map(|d| d.to_string()).collect::<Vec<_>>().join(" x ");
+        return Err(SearchError::GridSize { dims, cells });
+    }
+    Ok(cells as usize)
+}
+
+/// A 2-D occupancy grid, 8-connected without corner cutting.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Grid2 {
+    nx: usize,
+    ny: usize,
+    blocked: Vec<bool>,
+}
+
+impl Grid2 {
+    /// An all-free grid. Errors when `nx * ny` is zero or exceeds [`MAX_CELLS`].
+    pub fn new(nx: usize, ny: usize) -> Result<Self, SearchError> {
+        let cells = check_dims(&[nx, ny])?;
+        Ok(Self { nx, ny, blocked: vec![false; cells] })
+    }
+
+    /// A grid from a flat blocked mask (`blocked[i + nx * j]`).
+    pub fn from_blocked(nx: usize, ny: usize, blocked: Vec<bool>) -> Result<Self, SearchError> {
+        let cells = check_dims(&[nx, ny])?;
+        if blocked.len() != cells {
+            return Err(SearchError::BufferLength { what: "blocked mask", got: blocked.len(), cells });
+        }
+        Ok(Self { nx, ny, blocked })
+    }
+
+    /// Cells along x.
+    pub fn nx(&self) -> usize {
+        self.nx
+    }
+    /// Cells along y.
+    pub fn ny(&self) -> usize {
+        self.ny
+    }
+    /// Number of cells.
+    pub fn len(&self) -> usize {
+        self.blocked.len()
+    }
+    /// Never true (a grid has at least one cell); for clippy's `len` convention.
+    pub fn is_empty(&self) -> bool {
+        self.blocked.is_empty()
+    }
+    /// Flat index of `(i, j)`. Panics in debug builds if out of range.
+    #[inline]
+    pub fn index(&self, i: usize, j: usize) -> usize {
+        debug_assert!(i < self.nx && j < self.ny);
+        i + self.nx * j
+    }
+    /// `(i, j)` of a flat index.
+    #[inline]
+    pub fn coords(&self, cell: usize) -> (usize, usize) {
+        (cell % self.nx, cell / self.nx)
+    }
+    /// The blocked mask, `blocked[i + nx * j]`.
+    pub fn blocked(&self) -> &[bool] {
+        &self.blocked
+    }
+    /// Mutable blocked mask.
+    pub fn blocked_mut(&mut self) -> &mut [bool] {
+        &mut self.blocked
+    }
+    /// Marks `(i, j)` blocked or free.
+    pub fn set_blocked(&mut self, i: usize, j: usize, blocked: bool) {
+        let c = self.index(i, j);
+        self.blocked[c] = blocked;
+    }
+    /// Length of one move in cell units: 1 orthogonal, √2 diagonal (the cells
+    /// are assumed adjacent).
+    #[inline]
+    pub fn step_length(&self, from: usize, to: usize) -> f64 {
+        let d = from.abs_diff(to);
+        if d == 1 || d == self.nx {
+            1.0
+        } else {
+            std::f64::consts::SQRT_2
+        }
+    }
+    /// Euclidean distance between cell centres, in cell units.
+    pub fn euclidean(&self, a: usize, b: usize) -> f64 {
+        let (ai, aj) = self.coords(a);
+        let (bi, bj) = self.coords(b);
+        let dx = ai.abs_diff(bi) as f64;
+        let dy = aj.abs_diff(bj) as f64;
+        dx.hypot(dy)
+    }
+    /// Octile distance (the 8-connected shortest length on an empty grid), in
+    /// cell units: an admissible and consistent heuristic for unit-length moves.
+    #[inline]
+    pub fn octile(&self, a: usize, b: usize) -> f64 {
+        let (ai, aj) = self.coords(a);
+        let (bi, bj) = self.coords(b);
+        let dx = ai.abs_diff(bi) as f64;
+        let dy = aj.abs_diff(bj) as f64;
+        let (lo, hi) = if dx < dy { (dx, dy) } else { (dy, dx) };
+        hi + (std::f64::consts::SQRT_2 - 1.0) * lo
+    }
+}
+
+impl SearchGrid for Grid2 {
+    #[inline]
+    fn cell_count(&self) -> usize {
+        self.blocked.len()
+    }
+    #[inline]
+    fn is_blocked(&self, cell: usize) -> bool {
+        self.blocked[cell]
+    }
+    #[inline]
+    fn for_each_neighbour<F: FnMut(usize)>(&self, cell: usize, mut f: F) {
+        let nx = self.nx;
+        let (i, j) = (cell % nx, cell / nx);
+        let b = &self.blocked;
+        let has_w = i > 0;
+        let has_e = i + 1 < nx;
+        let has_s = j > 0;
+        let has_n = j + 1 < self.ny;
+        let w = has_w && !b[cell - 1];
+        let e = has_e && !b[cell + 1];
+        let s = has_s && !b[cell - nx];
+        let n = has_n && !b[cell + nx];
+        if e {
+            f(cell + 1);
+        }
+        if n {
+            f(cell + nx);
+        }
+        if w {
+            f(cell - 1);
+        }
+        if s {
+            f(cell - nx);
+        }
+        if n && e && !b[cell + nx + 1] {
+            f(cell + nx + 1);
+        }
+        if n && w && !b[cell + nx - 1] {
+            f(cell + nx - 1);
+        }
+        if s && w && !b[cell - nx - 1] {
+            f(cell - nx - 1);
+        }
+        if s && e && !b[cell - nx + 1] {
+            f(cell - nx + 1);
+        }
+    }
+}
+
+/// A 3-D occupancy grid, 26-connected without corner cutting (box rule, see the
+/// module docs).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Grid3 {
+    nx: usize,
+    ny: usize,
+    nz: usize,
+    blocked: Vec<bool>,
+}
+
+/// One of the 26 moves, with the slots (in the 3×3×3 neighbourhood) of the moves
+/// obtained by zeroing one of its non-zero components. By induction on the
+/// number of non-zero components, "target free and every sub-move allowed" is
+/// exactly the box rule.
+#[derive(Debug, Clone, Copy)]
+struct Move3 {
+    d: [isize; 3],
+    slot: usize,
+    subs: [usize; 3],
+    nsubs: usize,
+}
+
+fn slot(d: [isize; 3]) -> usize {
+    ((d[0] + 1) + 3 * (d[1] + 1) + 9 * (d[2] + 1)) as usize
+}
+
+fn moves3() -> &'static [Move3; 26] {
+    static TABLE: OnceLock<[Move3; 26]> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let mut all = Vec::with_capacity(26);
+        for nnz in 1..=3 {
+            for dk in -1..=1isize {
+                for dj in -1..=1isize {
+                    for di in -1..=1isize {
+                        let d = [di, dj, dk];
+                        if d.iter().filter(|&&x| x != 0).count() != nnz {
+                            continue;
+                        }
+                        let mut subs = [0; 3];
+                        let mut nsubs = 0;
+                        if nnz > 1 {
+                            for a in 0..3 {
+                                if d[a] != 0 {
+                                    let mut s = d;
+                                    s[a] = 0;
+                                    subs[nsubs] = slot(s);
+                                    nsubs += 1;
+                                }
+                            }
+                        }
+                        all.push(Move3 { d, slot: slot(d), subs, nsubs });
+                    }
+                }
+            }
+        }
+        all.try_into().expect("26 moves")
+    })
+}
+
+impl Grid3 {
+    /// An all-free grid. Errors when `nx * ny * nz` is zero or exceeds [`MAX_CELLS`].
+    pub fn new(nx: usize, ny: usize, nz: usize) -> Result<Self, SearchError> {
+        let cells = check_dims(&[nx, ny, nz])?;
+        Ok(Self { nx, ny, nz, blocked: vec![false; cells] })
+    }
+
+    /// A grid from a flat blocked mask (`blocked[i + nx * (j + ny * k)]`).
+    pub fn from_blocked(nx: usize, ny: usize, nz: usize, blocked: Vec<bool>) -> Result<Self, SearchError> {
+        let cells = check_dims(&[nx, ny, nz])?;
+        if blocked.len() != cells {
+            return Err(SearchError::BufferLength { what: "blocked mask", got: blocked.len(), cells });
+        }
+        Ok(Self { nx, ny, nz, blocked })
+    }
+
+    /// Cells along x.
+    pub fn nx(&self) -> usize {
+        self.nx
+    }
+    /// Cells along y.
+    pub fn ny(&self) -> usize {
+        self.ny
+    }
+    /// Cells along z.
+    pub fn nz(&self) -> usize {
+        self.nz
+    }
+    /// Number of cells.
+    pub fn len(&self) -> usize {
+        self.blocked.len()
+    }
+    /// Never true (a grid has at least one cell).
+    pub fn is_empty(&self) -> bool {
+        self.blocked.is_empty()
+    }
+    /// Flat index of `(i, j, k)`.
+    #[inline]
+    pub fn index(&self, i: usize, j: usize, k: usize) -> usize {
+        debug_assert!(i < self.nx && j < self.ny && k < self.nz);
+        i + self.nx * (j + self.ny * k)
+    }
+    /// `(i, j, k)` of a flat index.
+    #[inline]
+    pub fn coords(&self, cell: usize) -> (usize, usize, usize) {
+        let i = cell % self.nx;
+        let r = cell / self.nx;
+        (i, r % self.ny, r / self.ny)
+    }
+    /// The blocked mask.
+    pub fn blocked(&self) -> &[bool] {
+        &self.blocked
+    }
+    /// Mutable blocked mask.
+    pub fn blocked_mut(&mut self) -> &mut [bool] {
+        &mut self.blocked
+    }
+    /// Marks `(i, j, k)` blocked or free.
+    pub fn set_blocked(&mut self, i: usize, j: usize, k: usize, blocked: bool) {
+        let c = self.index(i, j, k);
+        self.blocked[c] = blocked;
+    }
+    fn abs_deltas(&self, a: usize, b: usize) -> [f64; 3] {
+        let (ai, aj, ak) = self.coords(a);
+        let (bi, bj, bk) = self.coords(b);
+        [ai.abs_diff(bi) as f64, aj.abs_diff(bj) as f64, ak.abs_diff(bk) as f64]
+    }
+    /// Length of one move in cell units: 1, √2 or √3 (cells assumed adjacent).
+    #[inline]
+    pub fn step_length(&self, from: usize, to: usize) -> f64 {
+        let d = self.abs_deltas(from, to);
+        match d.iter().filter(|&&x| x != 0.0).count() {
+            1 => 1.0,
+            2 => std::f64::consts::SQRT_2,
+            _ => 3f64.sqrt(),
+        }
+    }
+    /// Euclidean distance between cell centres, in cell units.
+    pub fn euclidean(&self, a: usize, b: usize) -> f64 {
+        let [dx, dy, dz] = self.abs_deltas(a, b);
+        (dx * dx + dy * dy + dz * dz).sqrt()
+    }
+    /// The 26-connected shortest length on an empty grid (3-D "octile"): with
+    /// sorted deltas `d1 ≥ d2 ≥ d3`, `√3·d3 + √2·(d2 − d3) + (d1 − d2)`.
+    /// Admissible and consistent for unit-length moves.
+    pub fn octile(&self, a: usize, b: usize) -> f64 {
+        let mut d = self.abs_deltas(a, b);
+        d.sort_by(|x, y| y.total_cmp(x));
+        3f64.sqrt() * d[2] + std::f64::consts::SQRT_2 * (d[1] - d[2]) + (d[0] - d[1])
+    }
+}
+
+impl SearchGrid for Grid3 {
+    #[inline]
+    fn cell_count(&self) -> usize {
+        self.blocked.len()
+    }
+    #[inline]
+    fn is_blocked(&self, cell: usize) -> bool {
+        self.blocked[cell]
+    }
+    fn for_each_neighbour<F: FnMut(usize)>(&self, cell: usize, mut f: F) {
+        let (i, j, k) = self.coords(cell);
+        let n = [self.nx, self.ny, self.nz];
+        let c = [i, j, k];
+        let strides = [1isize, self.nx as isize, (self.nx * self.ny) as isize];
+        // allowed[slot] is filled in order of increasing number of non-zero
+        // components, so sub-moves are decided before the moves built on them.
+        let mut allowed = [false; 27];
+        for m in moves3() {
+            let inside = (0..3).all(|a| {
+                let x = c[a] as isize + m.d[a];
+                x >= 0 && (x as usize) < n[a]
+            });
+            if !inside {
+                continue;
+            }
+            let off: isize = (0..3).map(|a| m.d[a] * strides[a]).sum();
+            let target = (cell as isize + off) as usize;
+            if self.blocked[target] || !m.subs[..m.nsubs].iter().all(|&s| allowed[s]) {
+                continue;
+            }
+            allowed[m.slot] = true;
+            f(target);
+        }
+    }
+}

@@ -1,0 +1,38 @@
+//! Exact graph and grid search for tidepath.
+//!
+//! Pure algorithms with no dependency on the rest of tidepath: the core
+//! rasterises its worlds into [`Grid2`] / [`Grid3`] and prices moves with
+//! closures; this crate finds optimal routes, proves that none exists, or says
+//! plainly that it gave up (limits), never confusing the last two.
+//!
+//! * [`astar`] / [`astar_in`]: A* (Dijkstra with a zero heuristic), time-dependent
+//!   costs via `g_from`.
+//! * [`theta_star`] / [`theta_star_in`]: any-angle Theta* with exact line of sight.
+//! * [`visibility::shortest_path`]: exact 2-D shortest path among circles and
+//!   polygons (tangent visibility graph).
+//! * [`maximin`]: bottleneck (e.g. deepest-water) path and where it pinches.
+//! * [`connected`]: flood fill, 2-D and 3-D.
+//!
+//! Grid connectivity (no corner cutting) is described in [`grid`], line of
+//! sight in [`los`]; the two rules agree on single moves.
+
+pub mod arena;
+pub mod astar;
+pub mod connected;
+pub mod error;
+pub mod grid;
+pub mod los;
+pub mod maximin;
+pub mod outcome;
+pub mod theta;
+pub mod visibility;
+
+pub use arena::SearchArena;
+pub use astar::{astar, astar_in};
+pub use connected::{connected, connected_in};
+pub use error::SearchError;
+pub use grid::{Grid2, Grid3, SearchGrid, MAX_CELLS};
+pub use los::LineOfSight;
+pub use maximin::{maximin, maximin_in, Bottleneck};
+pub use outcome::{Limits, SearchOutcome, SearchStatus, StopReason, POLL_EVERY};
+pub use theta::{theta_star, theta_star_in};
