@@ -380,3 +380,83 @@ impl SearchGrid for Grid3 {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn neighbours<G: SearchGrid>(g: &G, c: usize) -> Vec<usize> {
+        let mut v = Vec::new();
+        g.for_each_neighbour(c, |n| v.push(n));
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn index_round_trip() {
+        let g = Grid2::new(7, 5).unwrap();
+        for c in 0..g.len() {
+            let (i, j) = g.coords(c);
+            assert_eq!(g.index(i, j), c);
+        }
+        let g = Grid3::new(4, 3, 5).unwrap();
+        for c in 0..g.len() {
+            let (i, j, k) = g.coords(c);
+            assert_eq!(g.index(i, j, k), c);
+        }
+    }
+
+    #[test]
+    fn refuses_absurd_sizes() {
+        let e = Grid2::new(1 << 16, 1 << 16).unwrap_err();
+        assert!(e.to_string().contains("65536 x 65536 = 4294967296 cells"), "{e}");
+        assert!(Grid2::new(0, 4).is_err());
+        assert!(Grid3::new(1 << 11, 1 << 10, 1 << 11).is_err());
+        assert!(Grid3::new(1 << 10, 1 << 10, 1 << 11).is_ok_and(|g| g.len() == MAX_CELLS));
+        assert!(matches!(Grid2::from_blocked(3, 3, vec![false; 8]), Err(SearchError::BufferLength { got: 8, .. })));
+    }
+
+    #[test]
+    fn grid2_moves_and_corner_rule() {
+        let mut g = Grid2::new(3, 3).unwrap();
+        assert_eq!(neighbours(&g, g.index(1, 1)).len(), 8);
+        assert_eq!(neighbours(&g, g.index(0, 0)), vec![1, 3, 4]);
+        // One blocked orthogonal neighbour forbids the diagonal past its corner.
+        g.set_blocked(1, 0, true);
+        assert_eq!(neighbours(&g, g.index(0, 0)), vec![3]);
+        // (1,1) loses the two diagonals that would clip (1,0).
+        let n = neighbours(&g, g.index(1, 1));
+        assert!(!n.contains(&g.index(0, 0)) && !n.contains(&g.index(2, 0)) && !n.contains(&g.index(1, 0)));
+        assert_eq!(n.len(), 5);
+    }
+
+    #[test]
+    fn grid3_moves_and_box_rule() {
+        let mut g = Grid3::new(3, 3, 3).unwrap();
+        assert_eq!(neighbours(&g, g.index(1, 1, 1)).len(), 26);
+        assert_eq!(neighbours(&g, 0).len(), 7);
+        g.set_blocked(1, 0, 0, true);
+        // Only moves whose box avoids (1,0,0) remain: (0,1,0), (0,0,1), (0,1,1).
+        let want = vec![g.index(0, 1, 0), g.index(0, 0, 1), g.index(0, 1, 1)];
+        let mut want = want;
+        want.sort();
+        assert_eq!(neighbours(&g, 0), want);
+        // Block an edge-adjacent cell: the space diagonal from (0,0,0) needs all 8.
+        let mut g = Grid3::new(2, 2, 2).unwrap();
+        g.set_blocked(1, 1, 0, true);
+        let n = neighbours(&g, 0);
+        assert!(!n.contains(&g.index(1, 1, 1)));
+        assert!(n.contains(&g.index(1, 0, 1)) && n.contains(&g.index(0, 1, 1)) && n.contains(&g.index(1, 0, 0)));
+        assert_eq!(n.len(), 5);
+    }
+
+    #[test]
+    fn octile_distances() {
+        let g = Grid2::new(10, 10).unwrap();
+        let d = g.octile(g.index(0, 0), g.index(9, 5));
+        assert!((d - (4.0 + 5.0 * std::f64::consts::SQRT_2)).abs() < 1e-12);
+        let g = Grid3::new(10, 10, 10).unwrap();
+        let d = g.octile(g.index(0, 0, 0), g.index(9, 5, 2));
+        assert!((d - (2.0 * 3f64.sqrt() + 3.0 * std::f64::consts::SQRT_2 + 4.0)).abs() < 1e-12);
+    }
+}

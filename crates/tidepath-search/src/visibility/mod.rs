@@ -229,7 +229,11 @@ impl Graph<'_> {
     }
 
     /// Adds the segment between two (existing or new tangent) nodes if free.
-    fn try_segment(&mut self, a: (Point, Option<usize>, Option<(usize, f64)>), b: (Point, Option<usize>, Option<(usize, f64)>)) {
+    fn try_segment(
+        &mut self,
+        a: (Point, Option<usize>, Option<(usize, f64)>),
+        b: (Point, Option<usize>, Option<(usize, f64)>),
+    ) {
         if !self.segment_free(a.0, b.0) {
             return;
         }
@@ -486,3 +490,6 @@ fn build_path(g: &Graph, length: f64, route: &[(usize, Option<Edge>)], arc_step:
     }
     VisPath { length, pieces, polyline }
 }
+
+#[cfg(test)]
+mod tests;
