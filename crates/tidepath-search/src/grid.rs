@@ -118,7 +118,10 @@ impl Grid2 {
     #[inline]
     pub fn step_length(&self, from: usize, to: usize) -> f64 {
         let d = from.abs_diff(to);
-        if d == 1 || d == self.nx {
+        // Diagonal steps differ by nx ± 1, so a difference of 1 is orthogonal
+        // unless nx == 2 (where nx - 1 == 1 too): then compare rows.
+        let orthogonal = d == self.nx || (d == 1 && (self.nx != 2 || from / 2 == to / 2));
+        if orthogonal {
             1.0
         } else {
             std::f64::consts::SQRT_2
@@ -448,6 +451,17 @@ mod tests {
         assert!(!n.contains(&g.index(1, 1, 1)));
         assert!(n.contains(&g.index(1, 0, 1)) && n.contains(&g.index(0, 1, 1)) && n.contains(&g.index(1, 0, 0)));
         assert_eq!(n.len(), 5);
+    }
+
+    #[test]
+    fn step_lengths_on_narrow_grids() {
+        let g = Grid2::new(2, 3).unwrap();
+        assert_eq!(g.step_length(1, 2), std::f64::consts::SQRT_2); // (1,0) -> (0,1)
+        assert_eq!(g.step_length(0, 1), 1.0);
+        assert_eq!(g.step_length(1, 3), 1.0);
+        assert_eq!(g.step_length(0, 3), std::f64::consts::SQRT_2);
+        let g = Grid2::new(1, 3).unwrap();
+        assert_eq!(g.step_length(0, 1), 1.0);
     }
 
     #[test]
