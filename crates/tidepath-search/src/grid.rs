@@ -205,6 +205,9 @@ pub struct Grid3 {
     ny: usize,
     nz: usize,
     blocked: Vec<bool>,
+    /// The 26 flat offsets sorted, with their number of non-zero components,
+    /// when they are distinct (nx, ny ≥ 3): `step_length` then needs no division.
+    offsets: Option<Vec<(isize, u8)>>,
 }
 
 /// One of the 26 moves, with the slots (in the 3×3×3 neighbourhood) of the moves
@@ -217,6 +220,10 @@ struct Move3 {
     slot: usize,
     subs: [usize; 3],
     nsubs: usize,
+    /// Axes (bits) along which the move goes down / up: it leaves the grid
+    /// when it goes down at a low face or up at a high face.
+    down: u8,
+    up: u8,
 }
 
 fn slot(d: [isize; 3]) -> usize {
@@ -247,7 +254,8 @@ fn moves3() -> &'static [Move3; 26] {
                                 }
                             }
                         }
-                        all.push(Move3 { d, slot: slot(d), subs, nsubs });
+                        let axes = |want: isize| (0..3).filter(|&a| d[a] == want).fold(0u8, |m, a| m | 1 << a);
+                        all.push(Move3 { d, slot: slot(d), subs, nsubs, down: axes(-1), up: axes(1) });
                     }
                 }
             }
@@ -260,7 +268,7 @@ impl Grid3 {
     /// An all-free grid. Errors when `nx * ny * nz` is zero or exceeds [`MAX_CELLS`].
     pub fn new(nx: usize, ny: usize, nz: usize) -> Result<Self, SearchError> {
         let cells = check_dims(&[nx, ny, nz])?;
-        Ok(Self { nx, ny, nz, blocked: vec![false; cells] })
+        Self::from_blocked(nx, ny, nz, vec![false; cells])
     }
 
     /// A grid from a flat blocked mask (`blocked[i + nx * (j + ny * k)]`).
@@ -269,7 +277,18 @@ impl Grid3 {
         if blocked.len() != cells {
             return Err(SearchError::BufferLength { what: "blocked mask", got: blocked.len(), cells });
         }
-        Ok(Self { nx, ny, nz, blocked })
+        let offsets = (nx >= 3 && ny >= 3).then(|| {
+            let mut v: Vec<(isize, u8)> = moves3()
+                .iter()
+                .map(|m| {
+                    let off = m.d[0] + m.d[1] * nx as isize + m.d[2] * (nx * ny) as isize;
+                    (off, m.d.iter().filter(|&&x| x != 0).count() as u8)
+                })
+                .collect();
+            v.sort();
+            v
+        });
+        Ok(Self { nx, ny, nz, blocked, offsets })
     }
 
     /// Cells along x.
@@ -326,12 +345,21 @@ impl Grid3 {
     /// Length of one move in cell units: 1, √2 or √3 (cells assumed adjacent).
     #[inline]
     pub fn step_length(&self, from: usize, to: usize) -> f64 {
-        let d = self.abs_deltas(from, to);
-        match d.iter().filter(|&&x| x != 0.0).count() {
-            1 => 1.0,
-            2 => std::f64::consts::SQRT_2,
-            _ => 3f64.sqrt(),
-        }
+        const LEN: [f64; 4] = [0.0, 1.0, std::f64::consts::SQRT_2, 1.732_050_807_568_877_2];
+        let nnz = match &self.offsets {
+            Some(table) => {
+                let d = to as isize - from as isize;
+                match table.binary_search_by_key(&d, |e| e.0) {
+                    Ok(k) => table[k].1,
+                    Err(_) => self.nonzero_axes(from, to),
+                }
+            }
+            None => self.nonzero_axes(from, to),
+        };
+        LEN[nnz.min(3) as usize]
+    }
+    fn nonzero_axes(&self, a: usize, b: usize) -> u8 {
+        self.abs_deltas(a, b).iter().filter(|&&x| x != 0.0).count() as u8
     }
     /// Euclidean distance between cell centres, in cell units.
     pub fn euclidean(&self, a: usize, b: usize) -> f64 {
@@ -359,22 +387,17 @@ impl SearchGrid for Grid3 {
     }
     fn for_each_neighbour<F: FnMut(usize)>(&self, cell: usize, mut f: F) {
         let (i, j, k) = self.coords(cell);
-        let n = [self.nx, self.ny, self.nz];
-        let c = [i, j, k];
-        let strides = [1isize, self.nx as isize, (self.nx * self.ny) as isize];
+        let (nx, sxy) = (self.nx as isize, (self.nx * self.ny) as isize);
+        let at_low = (i == 0) as u8 | ((j == 0) as u8) << 1 | ((k == 0) as u8) << 2;
+        let at_high = (i + 1 == self.nx) as u8 | ((j + 1 == self.ny) as u8) << 1 | ((k + 1 == self.nz) as u8) << 2;
         // allowed[slot] is filled in order of increasing number of non-zero
         // components, so sub-moves are decided before the moves built on them.
         let mut allowed = [false; 27];
         for m in moves3() {
-            let inside = (0..3).all(|a| {
-                let x = c[a] as isize + m.d[a];
-                x >= 0 && (x as usize) < n[a]
-            });
-            if !inside {
+            if m.down & at_low != 0 || m.up & at_high != 0 {
                 continue;
             }
-            let off: isize = (0..3).map(|a| m.d[a] * strides[a]).sum();
-            let target = (cell as isize + off) as usize;
+            let target = (cell as isize + m.d[0] + m.d[1] * nx + m.d[2] * sxy) as usize;
             if self.blocked[target] || !m.subs[..m.nsubs].iter().all(|&s| allowed[s]) {
                 continue;
             }
@@ -462,6 +485,18 @@ mod tests {
         assert_eq!(g.step_length(0, 3), std::f64::consts::SQRT_2);
         let g = Grid2::new(1, 3).unwrap();
         assert_eq!(g.step_length(0, 1), 1.0);
+    }
+
+    #[test]
+    fn step_lengths_3d_match_coordinates() {
+        for (nx, ny, nz) in [(4, 5, 3), (2, 2, 2), (3, 1, 4)] {
+            let g = Grid3::new(nx, ny, nz).unwrap();
+            for c in 0..g.len() {
+                g.for_each_neighbour(c, |n| {
+                    assert_eq!(g.step_length(c, n), g.euclidean(c, n), "{nx}x{ny}x{nz}: {c} -> {n}");
+                });
+            }
+        }
     }
 
     #[test]

@@ -65,10 +65,10 @@ where
     check_endpoints(grid, start, goal)?;
     arena.reset(grid.cell_count());
     arena.g[start] = 0.0;
-    arena.open.push(OpenEntry { f: heuristic(start), g: 0.0, cell: start as u32 });
+    arena.open.push(OpenEntry::new(heuristic(start), 0.0, start));
     let mut expansions = 0u64;
     while let Some(entry) = arena.open.pop() {
-        let u = entry.cell as usize;
+        let u = entry.cell();
         if arena.is_closed(u) {
             continue;
         }
@@ -110,7 +110,7 @@ where
                 if ng < g[v] {
                     g[v] = ng;
                     parent[v] = from;
-                    open.push(OpenEntry { f: ng + heuristic(v), g: ng, cell: v as u32 });
+                    open.push(OpenEntry::new(ng + heuristic(v), ng, v));
                 }
             }
         });

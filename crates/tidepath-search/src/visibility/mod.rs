@@ -332,7 +332,7 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
         }
     }
     // Arcs between angularly consecutive tangent points.
-    for ci in 0..circles.len() {
+    for (ci, circle) in circles.iter().enumerate() {
         let mut pts = std::mem::take(&mut g.on_circle[ci]);
         pts.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
         let m = pts.len();
@@ -341,9 +341,9 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
                 let (a0, n0) = pts[k];
                 let (a1, n1) = pts[(k + 1) % m];
                 let sweep = if k + 1 < m { a1 - a0 } else { a1 + std::f64::consts::TAU - a0 };
-                let arc = Arc { circle: circles[ci], start: a0, sweep };
+                let arc = Arc { circle: *circle, start: a0, sweep };
                 if g.arc_free(&arc, ci) {
-                    g.add_edge(n0, n1, circles[ci].radius * sweep, EdgeKind::Arc { circle: ci, sweep });
+                    g.add_edge(n0, n1, circle.radius * sweep, EdgeKind::Arc { circle: ci, sweep });
                 }
             }
         }
@@ -420,9 +420,11 @@ impl Ord for Open {
     }
 }
 
-/// Dijkstra from `s` to `t`; returns the length and the (node, edge used to
-/// reach it) route.
-fn dijkstra(g: &Graph, s: usize, t: usize) -> Option<(f64, Vec<(usize, Option<Edge>)>)> {
+/// A route through the graph: each node with the edge used to reach it.
+type Route = Vec<(usize, Option<Edge>)>;
+
+/// Dijkstra from `s` to `t`; returns the length and the route.
+fn dijkstra(g: &Graph, s: usize, t: usize) -> Option<(f64, Route)> {
     let n = g.nodes.len();
     let mut d = vec![f64::INFINITY; n];
     let mut from: Vec<Option<(usize, Edge)>> = vec![None; n];
