@@ -1,6 +1,6 @@
 //! A* on a 1000 x 1000 8-connected random grid, beside the `pathfinding`
 //! crate's `astar` on the same grid, moves and costs (checked equal before
-//! timing), and 26-connected A* on 200 x 200 x 100.
+//! timing); Theta* on the same grid; 26-connected A* on 200 x 200 x 100.
 //!
 //! Costs are integers (10000 per orthogonal move, 14142 per diagonal) so that
 //! `pathfinding`, which needs `Ord` costs, sees exactly the same numbers as our
@@ -9,7 +9,7 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use tidepath_search::{astar, astar_in, connected, Grid2, Grid3, Limits, SearchArena, SearchGrid};
+use tidepath_search::{astar, astar_in, connected, theta_star_in, Grid2, Grid3, Limits, SearchArena, SearchGrid};
 
 const ORTHO: u64 = 10_000;
 const DIAG: u64 = 14_142;
@@ -96,6 +96,24 @@ fn bench_2d(c: &mut Criterion) {
         b.iter(|| astar(&g, s, t, |a, b, _| Some(step(a, b) as f64), |v| octile2(&g, v, t) as f64, &Limits::none()))
     });
     group.bench_function("pathfinding_astar", |b| b.iter(|| theirs().1));
+    group.finish();
+
+    let theta = |arena: &mut SearchArena| {
+        theta_star_in(arena, &g, s, t, |a, b, _| Some(g.euclidean(a, b)), |v| g.euclidean(v, t), &Limits::none())
+            .unwrap()
+    };
+    let th = theta(&mut arena);
+    assert!(th.found() && th.cost <= a.cost / ORTHO as f64 + 1e-9);
+    println!(
+        "theta*: length {:.3} cells ({} turning points, {} expansions) vs A* {:.3}",
+        th.cost,
+        th.path.len(),
+        th.expansions,
+        a.cost / ORTHO as f64
+    );
+    let mut group = c.benchmark_group("theta_star_2d_1000x1000_25pct");
+    group.sample_size(10);
+    group.bench_function("tidepath_search_reused_arena", |b| b.iter(|| theta(&mut arena).cost));
     group.finish();
 }
 

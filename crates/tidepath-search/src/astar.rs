@@ -121,7 +121,9 @@ where
             if ng < g[v] {
                 g[v] = ng;
                 parent[v] = u as u32;
-                open.push(OpenEntry::new(ng + heuristic(v), ng, v));
+                let h = heuristic(v);
+                debug_assert!(!h.is_nan(), "heuristic is NaN at cell {v}");
+                open.push(OpenEntry::new(ng + h, ng, v));
             }
         });
     }
@@ -248,6 +250,14 @@ mod tests {
         let o = astar(&g, 0, 4, |_, _, t| Some(if t < 2.0 { 1.0 } else { 3.0 }), |_| 0.0, &Limits::none()).unwrap();
         assert_eq!(o.cost, 8.0);
         assert_eq!(o.path, vec![0, 1, 2, 3, 4]);
+    }
+
+    #[test]
+    #[cfg(debug_assertions)]
+    #[should_panic(expected = "is NaN or negative")]
+    fn negative_edge_cost_is_a_bug() {
+        let g = Grid2::new(3, 1).unwrap();
+        let _ = astar(&g, 0, 2, |_, _, _| Some(-1.0), |_| 0.0, &Limits::none());
     }
 
     #[test]

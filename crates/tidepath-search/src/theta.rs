@@ -110,7 +110,9 @@ where
                 if ng < g[v] {
                     g[v] = ng;
                     parent[v] = from;
-                    open.push(OpenEntry::new(ng + heuristic(v), ng, v));
+                    let h = heuristic(v);
+                    debug_assert!(!h.is_nan(), "heuristic is NaN at cell {v}");
+                    open.push(OpenEntry::new(ng + h, ng, v));
                 }
             }
         });
