@@ -67,6 +67,57 @@ proptest! {
     }
 
     #[test]
+    fn time_dependent_search_matches_label_correcting((g, s, t) in grid2(), phase in 0.0f64..6.3) {
+        // FIFO costs (t + c(t) is non-decreasing since |c'| ≤ 0.5·√2 < 1): the
+        // earliest arrival from label-setting A* (zero heuristic) must equal the
+        // fixed point of Bellman–Ford relaxation.
+        let cost = |a: usize, b: usize, time: f64| Some(g.step_length(a, b) * (1.0 + 0.5 * (time + phase + a as f64).sin()));
+        let o = astar(&g, s, t, cost, |_| 0.0, &Limits::none()).unwrap();
+        let mut arr = vec![f64::INFINITY; g.len()];
+        arr[s] = 0.0;
+        for _ in 0..g.len() {
+            let mut changed = false;
+            for u in 0..g.len() {
+                if arr[u].is_finite() && !g.blocked()[u] {
+                    for v in neighbours(&g, u) {
+                        let x = arr[u] + cost(u, v, arr[u]).unwrap();
+                        if x < arr[v] - 1e-12 {
+                            arr[v] = x;
+                            changed = true;
+                        }
+                    }
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        prop_assert_eq!(o.found(), arr[t].is_finite());
+        if o.found() {
+            prop_assert!((o.cost - arr[t]).abs() < 1e-9, "{} vs {}", o.cost, arr[t]);
+            // Replaying the path on the clock gives the reported arrival time.
+            let mut time = 0.0;
+            for w in o.path.windows(2) {
+                time += cost(w[0], w[1], time).unwrap();
+            }
+            prop_assert!((time - o.cost).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn expansion_limit_never_claims_no_path((g, s, t) in grid2(), max in 0u64..200) {
+        let cost = |a: usize, b: usize, _: f64| Some(g.step_length(a, b));
+        let full = astar(&g, s, t, cost, |c| g.octile(c, t), &Limits::none()).unwrap();
+        let lim = Limits { max_expansions: Some(max), ..Limits::none() };
+        let cut = astar(&g, s, t, cost, |c| g.octile(c, t), &lim).unwrap();
+        prop_assert!(cut.expansions <= max);
+        match cut.status {
+            SearchStatus::Stopped(_) => prop_assert_eq!(cut.expansions, max),
+            _ => prop_assert_eq!(&cut, &full),
+        }
+    }
+
+    #[test]
     fn astar_equals_dijkstra_3d((g, s, t) in grid3()) {
         let cost = |a: usize, b: usize, _: f64| Some(g.step_length(a, b));
         let dij = astar(&g, s, t, cost, |_| 0.0, &Limits::none()).unwrap();
