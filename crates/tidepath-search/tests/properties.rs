@@ -195,6 +195,44 @@ proptest! {
     }
 
     #[test]
+    fn grid_moves_are_exactly_the_visible_adjacent_pairs((g, _s, _t) in grid3()) {
+        // The connectivity rule and the line-of-sight rule agree on single moves.
+        for c in (0..g.len()).filter(|&c| !g.blocked()[c]) {
+            let moves = neighbours(&g, c);
+            let (i, j, k) = g.coords(c);
+            for n in 0..g.len() {
+                let (a, b, d) = g.coords(n);
+                let adjacent = n != c && i.abs_diff(a) <= 1 && j.abs_diff(b) <= 1 && k.abs_diff(d) <= 1;
+                if adjacent && !g.blocked()[n] {
+                    prop_assert_eq!(moves.contains(&n), g.line_of_sight(c, n), "{} -> {}", c, n);
+                } else {
+                    prop_assert!(!moves.contains(&n));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn grid2_moves_are_exactly_the_visible_adjacent_pairs((g, _s, _t) in grid2()) {
+        for c in (0..g.len()).filter(|&c| !g.blocked()[c]) {
+            let moves = neighbours(&g, c);
+            let (i, j) = g.coords(c);
+            for di in -1i64..=1 {
+                for dj in -1i64..=1 {
+                    let (a, b) = (i as i64 + di, j as i64 + dj);
+                    if (di, dj) == (0, 0) || a < 0 || b < 0 || a >= g.nx() as i64 || b >= g.ny() as i64 {
+                        continue;
+                    }
+                    let n = g.index(a as usize, b as usize);
+                    let visible = !g.blocked()[n] && g.line_of_sight(c, n);
+                    prop_assert_eq!(moves.contains(&n), visible);
+                }
+            }
+            prop_assert!(moves.len() <= 8);
+        }
+    }
+
+    #[test]
     fn line_of_sight_matches_brute_force_2d((g, s, t) in grid2()) {
         let (si, sj) = g.coords(s);
         let (ti, tj) = g.coords(t);
