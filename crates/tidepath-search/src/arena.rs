@@ -14,19 +14,52 @@ pub(crate) const NO_PARENT: u32 = u32::MAX;
 /// the smallest `f` pops first; among equal `f` the largest `g` (the deeper
 /// node, fewer re-expansions of the frontier) and then the smallest cell index,
 /// so ties are broken deterministically.
-#[derive(Debug, Clone, Copy)]
+///
+/// `f` is stored as an order-preserving integer key ([`key`]), so the heap's
+/// sift loops do plain integer compares; `g` only breaks ties, so it is kept
+/// as the same kind of key of its `f32` rounding, making an entry 16 bytes.
+/// (Rounding can only merge near-ties in `g`, which the cell index then breaks:
+/// still deterministic, and optimality never depends on tie-breaking.)
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct OpenEntry {
-    pub f: f64,
-    pub g: f64,
-    pub cell: u32,
+    f: u64,
+    g: u32,
+    cell: u32,
 }
 
-impl PartialEq for OpenEntry {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
+/// Maps an `f64` to a `u64` whose unsigned order is `f64::total_cmp`'s order.
+#[inline]
+pub(crate) fn key(x: f64) -> u64 {
+    let b = x.to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | (1 << 63)
     }
 }
-impl Eq for OpenEntry {}
+
+/// [`key`] for `f32`.
+#[inline]
+fn key32(x: f32) -> u32 {
+    let b = x.to_bits();
+    if b >> 31 == 1 {
+        !b
+    } else {
+        b | (1 << 31)
+    }
+}
+
+impl OpenEntry {
+    #[inline]
+    pub fn new(f: f64, g: f64, cell: usize) -> Self {
+        Self { f: key(f), g: key32(g as f32), cell: cell as u32 }
+    }
+    #[inline]
+    pub fn cell(&self) -> usize {
+        self.cell as usize
+    }
+}
+
 impl PartialOrd for OpenEntry {
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
@@ -35,7 +68,7 @@ impl PartialOrd for OpenEntry {
 impl Ord for OpenEntry {
     #[inline]
     fn cmp(&self, other: &Self) -> Ordering {
-        other.f.total_cmp(&self.f).then_with(|| self.g.total_cmp(&other.g)).then_with(|| other.cell.cmp(&self.cell))
+        other.f.cmp(&self.f).then_with(|| self.g.cmp(&other.g)).then_with(|| other.cell.cmp(&self.cell))
     }
 }
 
@@ -96,5 +129,26 @@ impl SearchArena {
         }
         path.reverse();
         path
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_follow_total_order() {
+        let xs = [f64::NEG_INFINITY, -3.5, -0.0, 0.0, 1e-300, 1.0, 2.5, f64::INFINITY];
+        for w in xs.windows(2) {
+            assert!(key(w[0]) < key(w[1]), "{} {}", w[0], w[1]);
+            assert!(key32(w[0] as f32) < key32(w[1] as f32) || w[0] as f32 == w[1] as f32);
+        }
+        let mut h = BinaryHeap::new();
+        h.push(OpenEntry::new(2.0, 1.0, 5));
+        h.push(OpenEntry::new(1.0, 0.5, 9));
+        h.push(OpenEntry::new(1.0, 0.9, 7));
+        h.push(OpenEntry::new(1.0, 0.9, 3));
+        let order: Vec<usize> = std::iter::from_fn(|| h.pop().map(|e| e.cell())).collect();
+        assert_eq!(order, vec![3, 7, 9, 5]);
     }
 }

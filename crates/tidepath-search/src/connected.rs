@@ -48,3 +48,37 @@ pub fn connected_in<G: SearchGrid>(
     }
     Ok(false)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Grid2, Grid3};
+
+    #[test]
+    fn wall_with_a_gap_in_2d_and_3d() {
+        let mut g = Grid2::new(5, 5).unwrap();
+        for j in 0..5 {
+            g.set_blocked(2, j, true);
+        }
+        assert!(!connected(&g, 0, 4).unwrap());
+        g.set_blocked(2, 3, false);
+        assert!(connected(&g, 0, 4).unwrap());
+        // Two blocked cells touching at a corner are a wall (no corner cutting).
+        let mut g = Grid2::new(2, 2).unwrap();
+        g.set_blocked(1, 0, true);
+        g.set_blocked(0, 1, true);
+        assert!(!connected(&g, 0, 3).unwrap());
+
+        let mut g = Grid3::new(4, 4, 4).unwrap();
+        for j in 0..4 {
+            for k in 0..4 {
+                g.set_blocked(2, j, k, true);
+            }
+        }
+        let goal = g.index(3, 3, 3);
+        assert!(!connected(&g, 0, goal).unwrap());
+        g.set_blocked(2, 1, 2, false);
+        assert!(connected(&g, 0, goal).unwrap());
+        assert_eq!(connected(&g, g.index(2, 0, 0), goal), Err(SearchError::StartBlocked(g.index(2, 0, 0))));
+    }
+}

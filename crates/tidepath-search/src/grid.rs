@@ -118,7 +118,10 @@ impl Grid2 {
     #[inline]
     pub fn step_length(&self, from: usize, to: usize) -> f64 {
         let d = from.abs_diff(to);
-        if d == 1 || d == self.nx {
+        // Diagonal steps differ by nx ± 1, so a difference of 1 is orthogonal
+        // unless nx == 2 (where nx - 1 == 1 too): then compare rows.
+        let orthogonal = d == self.nx || (d == 1 && (self.nx != 2 || from / 2 == to / 2));
+        if orthogonal {
             1.0
         } else {
             std::f64::consts::SQRT_2
@@ -202,6 +205,9 @@ pub struct Grid3 {
     ny: usize,
     nz: usize,
     blocked: Vec<bool>,
+    /// The 26 flat offsets sorted, with their number of non-zero components,
+    /// when they are distinct (nx, ny ≥ 3): `step_length` then needs no division.
+    offsets: Option<Vec<(isize, u8)>>,
 }
 
 /// One of the 26 moves, with the slots (in the 3×3×3 neighbourhood) of the moves
@@ -214,6 +220,10 @@ struct Move3 {
     slot: usize,
     subs: [usize; 3],
     nsubs: usize,
+    /// Axes (bits) along which the move goes down / up: it leaves the grid
+    /// when it goes down at a low face or up at a high face.
+    down: u8,
+    up: u8,
 }
 
 fn slot(d: [isize; 3]) -> usize {
@@ -244,7 +254,8 @@ fn moves3() -> &'static [Move3; 26] {
                                 }
                             }
                         }
-                        all.push(Move3 { d, slot: slot(d), subs, nsubs });
+                        let axes = |want: isize| (0..3).filter(|&a| d[a] == want).fold(0u8, |m, a| m | 1 << a);
+                        all.push(Move3 { d, slot: slot(d), subs, nsubs, down: axes(-1), up: axes(1) });
                     }
                 }
             }
@@ -257,7 +268,7 @@ impl Grid3 {
     /// An all-free grid. Errors when `nx * ny * nz` is zero or exceeds [`MAX_CELLS`].
     pub fn new(nx: usize, ny: usize, nz: usize) -> Result<Self, SearchError> {
         let cells = check_dims(&[nx, ny, nz])?;
-        Ok(Self { nx, ny, nz, blocked: vec![false; cells] })
+        Self::from_blocked(nx, ny, nz, vec![false; cells])
     }
 
     /// A grid from a flat blocked mask (`blocked[i + nx * (j + ny * k)]`).
@@ -266,7 +277,18 @@ impl Grid3 {
         if blocked.len() != cells {
             return Err(SearchError::BufferLength { what: "blocked mask", got: blocked.len(), cells });
         }
-        Ok(Self { nx, ny, nz, blocked })
+        let offsets = (nx >= 3 && ny >= 3).then(|| {
+            let mut v: Vec<(isize, u8)> = moves3()
+                .iter()
+                .map(|m| {
+                    let off = m.d[0] + m.d[1] * nx as isize + m.d[2] * (nx * ny) as isize;
+                    (off, m.d.iter().filter(|&&x| x != 0).count() as u8)
+                })
+                .collect();
+            v.sort();
+            v
+        });
+        Ok(Self { nx, ny, nz, blocked, offsets })
     }
 
     /// Cells along x.
@@ -323,12 +345,21 @@ impl Grid3 {
     /// Length of one move in cell units: 1, √2 or √3 (cells assumed adjacent).
     #[inline]
     pub fn step_length(&self, from: usize, to: usize) -> f64 {
-        let d = self.abs_deltas(from, to);
-        match d.iter().filter(|&&x| x != 0.0).count() {
-            1 => 1.0,
-            2 => std::f64::consts::SQRT_2,
-            _ => 3f64.sqrt(),
-        }
+        const LEN: [f64; 4] = [0.0, 1.0, std::f64::consts::SQRT_2, 1.732_050_807_568_877_2];
+        let nnz = match &self.offsets {
+            Some(table) => {
+                let d = to as isize - from as isize;
+                match table.binary_search_by_key(&d, |e| e.0) {
+                    Ok(k) => table[k].1,
+                    Err(_) => self.nonzero_axes(from, to),
+                }
+            }
+            None => self.nonzero_axes(from, to),
+        };
+        LEN[nnz.min(3) as usize]
+    }
+    fn nonzero_axes(&self, a: usize, b: usize) -> u8 {
+        self.abs_deltas(a, b).iter().filter(|&&x| x != 0.0).count() as u8
     }
     /// Euclidean distance between cell centres, in cell units.
     pub fn euclidean(&self, a: usize, b: usize) -> f64 {
@@ -356,27 +387,125 @@ impl SearchGrid for Grid3 {
     }
     fn for_each_neighbour<F: FnMut(usize)>(&self, cell: usize, mut f: F) {
         let (i, j, k) = self.coords(cell);
-        let n = [self.nx, self.ny, self.nz];
-        let c = [i, j, k];
-        let strides = [1isize, self.nx as isize, (self.nx * self.ny) as isize];
+        let (nx, sxy) = (self.nx as isize, (self.nx * self.ny) as isize);
+        let at_low = (i == 0) as u8 | ((j == 0) as u8) << 1 | ((k == 0) as u8) << 2;
+        let at_high = (i + 1 == self.nx) as u8 | ((j + 1 == self.ny) as u8) << 1 | ((k + 1 == self.nz) as u8) << 2;
         // allowed[slot] is filled in order of increasing number of non-zero
         // components, so sub-moves are decided before the moves built on them.
         let mut allowed = [false; 27];
         for m in moves3() {
-            let inside = (0..3).all(|a| {
-                let x = c[a] as isize + m.d[a];
-                x >= 0 && (x as usize) < n[a]
-            });
-            if !inside {
+            if m.down & at_low != 0 || m.up & at_high != 0 {
                 continue;
             }
-            let off: isize = (0..3).map(|a| m.d[a] * strides[a]).sum();
-            let target = (cell as isize + off) as usize;
+            let target = (cell as isize + m.d[0] + m.d[1] * nx + m.d[2] * sxy) as usize;
             if self.blocked[target] || !m.subs[..m.nsubs].iter().all(|&s| allowed[s]) {
                 continue;
             }
             allowed[m.slot] = true;
             f(target);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn neighbours<G: SearchGrid>(g: &G, c: usize) -> Vec<usize> {
+        let mut v = Vec::new();
+        g.for_each_neighbour(c, |n| v.push(n));
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn index_round_trip() {
+        let g = Grid2::new(7, 5).unwrap();
+        for c in 0..g.len() {
+            let (i, j) = g.coords(c);
+            assert_eq!(g.index(i, j), c);
+        }
+        let g = Grid3::new(4, 3, 5).unwrap();
+        for c in 0..g.len() {
+            let (i, j, k) = g.coords(c);
+            assert_eq!(g.index(i, j, k), c);
+        }
+    }
+
+    #[test]
+    fn refuses_absurd_sizes() {
+        let e = Grid2::new(1 << 16, 1 << 16).unwrap_err();
+        assert!(e.to_string().contains("65536 x 65536 = 4294967296 cells"), "{e}");
+        assert!(Grid2::new(0, 4).is_err());
+        assert!(Grid3::new(1 << 11, 1 << 10, 1 << 11).is_err());
+        assert!(Grid3::new(1 << 10, 1 << 10, 1 << 11).is_ok_and(|g| g.len() == MAX_CELLS));
+        assert!(matches!(Grid2::from_blocked(3, 3, vec![false; 8]), Err(SearchError::BufferLength { got: 8, .. })));
+    }
+
+    #[test]
+    fn grid2_moves_and_corner_rule() {
+        let mut g = Grid2::new(3, 3).unwrap();
+        assert_eq!(neighbours(&g, g.index(1, 1)).len(), 8);
+        assert_eq!(neighbours(&g, g.index(0, 0)), vec![1, 3, 4]);
+        // One blocked orthogonal neighbour forbids the diagonal past its corner.
+        g.set_blocked(1, 0, true);
+        assert_eq!(neighbours(&g, g.index(0, 0)), vec![3]);
+        // (1,1) loses the two diagonals that would clip (1,0).
+        let n = neighbours(&g, g.index(1, 1));
+        assert!(!n.contains(&g.index(0, 0)) && !n.contains(&g.index(2, 0)) && !n.contains(&g.index(1, 0)));
+        assert_eq!(n.len(), 5);
+    }
+
+    #[test]
+    fn grid3_moves_and_box_rule() {
+        let mut g = Grid3::new(3, 3, 3).unwrap();
+        assert_eq!(neighbours(&g, g.index(1, 1, 1)).len(), 26);
+        assert_eq!(neighbours(&g, 0).len(), 7);
+        g.set_blocked(1, 0, 0, true);
+        // Only moves whose box avoids (1,0,0) remain: (0,1,0), (0,0,1), (0,1,1).
+        let want = vec![g.index(0, 1, 0), g.index(0, 0, 1), g.index(0, 1, 1)];
+        let mut want = want;
+        want.sort();
+        assert_eq!(neighbours(&g, 0), want);
+        // Block an edge-adjacent cell: the space diagonal from (0,0,0) needs all 8.
+        let mut g = Grid3::new(2, 2, 2).unwrap();
+        g.set_blocked(1, 1, 0, true);
+        let n = neighbours(&g, 0);
+        assert!(!n.contains(&g.index(1, 1, 1)));
+        assert!(n.contains(&g.index(1, 0, 1)) && n.contains(&g.index(0, 1, 1)) && n.contains(&g.index(1, 0, 0)));
+        assert_eq!(n.len(), 5);
+    }
+
+    #[test]
+    fn step_lengths_on_narrow_grids() {
+        let g = Grid2::new(2, 3).unwrap();
+        assert_eq!(g.step_length(1, 2), std::f64::consts::SQRT_2); // (1,0) -> (0,1)
+        assert_eq!(g.step_length(0, 1), 1.0);
+        assert_eq!(g.step_length(1, 3), 1.0);
+        assert_eq!(g.step_length(0, 3), std::f64::consts::SQRT_2);
+        let g = Grid2::new(1, 3).unwrap();
+        assert_eq!(g.step_length(0, 1), 1.0);
+    }
+
+    #[test]
+    fn step_lengths_3d_match_coordinates() {
+        for (nx, ny, nz) in [(4, 5, 3), (2, 2, 2), (3, 1, 4)] {
+            let g = Grid3::new(nx, ny, nz).unwrap();
+            for c in 0..g.len() {
+                g.for_each_neighbour(c, |n| {
+                    assert_eq!(g.step_length(c, n), g.euclidean(c, n), "{nx}x{ny}x{nz}: {c} -> {n}");
+                });
+            }
+        }
+    }
+
+    #[test]
+    fn octile_distances() {
+        let g = Grid2::new(10, 10).unwrap();
+        let d = g.octile(g.index(0, 0), g.index(9, 5));
+        assert!((d - (4.0 + 5.0 * std::f64::consts::SQRT_2)).abs() < 1e-12);
+        let g = Grid3::new(10, 10, 10).unwrap();
+        let d = g.octile(g.index(0, 0, 0), g.index(9, 5, 2));
+        assert!((d - (2.0 * 3f64.sqrt() + 3.0 * std::f64::consts::SQRT_2 + 4.0)).abs() < 1e-12);
     }
 }

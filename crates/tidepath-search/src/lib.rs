@@ -15,6 +15,32 @@
 //!
 //! Grid connectivity (no corner cutting) is described in [`grid`], line of
 //! sight in [`los`]; the two rules agree on single moves.
+//!
+//! ```
+//! use tidepath_search::{astar, connected, Grid2, Limits, SearchStatus};
+//!
+//! // A 7 x 7 grid with a wall at x = 3 that has one gap at y = 5.
+//! let mut grid = Grid2::new(7, 7)?;
+//! for j in (0..7).filter(|&j| j != 5) {
+//!     grid.set_blocked(3, j, true);
+//! }
+//! let (start, goal) = (grid.index(0, 0), grid.index(6, 0));
+//! let out = astar(
+//!     &grid,
+//!     start,
+//!     goal,
+//!     |from, to, _g_from| Some(grid.step_length(from, to)), // metres per cell = 1
+//!     |cell| grid.octile(cell, goal),
+//!     &Limits::none(),
+//! )?;
+//! assert_eq!(out.status, SearchStatus::Found);
+//! assert!((out.cost - (8.0 + 4.0 * 2f64.sqrt())).abs() < 1e-9);
+//! assert!(out.path.contains(&grid.index(3, 5)));
+//!
+//! grid.set_blocked(3, 5, true);
+//! assert!(!connected(&grid, start, goal)?);
+//! # Ok::<(), tidepath_search::SearchError>(())
+//! ```
 
 pub mod arena;
 pub mod astar;

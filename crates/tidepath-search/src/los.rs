@@ -156,10 +156,15 @@ impl Grid3 {
         let (ai, aj, ak) = self.coords(a);
         let (bi, bj, bk) = self.coords(b);
         let dims = [self.nx() as i64, self.ny() as i64, self.nz() as i64];
-        for_each_touched([ai as i64, aj as i64, ak as i64], [bi as i64, bj as i64, bk as i64], dims, &mut |[i, j, k]| {
-            out.push(self.index(i as usize, j as usize, k as usize));
-            true
-        });
+        for_each_touched(
+            [ai as i64, aj as i64, ak as i64],
+            [bi as i64, bj as i64, bk as i64],
+            dims,
+            &mut |[i, j, k]| {
+                out.push(self.index(i as usize, j as usize, k as usize));
+                true
+            },
+        );
         out
     }
 }
@@ -173,5 +178,58 @@ impl LineOfSight for Grid3 {
         for_each_touched([ai as i64, aj as i64, ak as i64], [bi as i64, bj as i64, bk as i64], dims, &mut |[i, j, k]| {
             !blocked[self.index(i as usize, j as usize, k as usize)]
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn knight_move_touches_the_shared_edge_cells() {
+        // (0.5,0.5) -> (2.5,1.5) passes through (1.5, 1.0): on the edge between
+        // (1,0) and (1,1), which both count.
+        let g = Grid2::new(4, 3).unwrap();
+        let mut t = g.touched_cells(g.index(0, 0), g.index(2, 1));
+        t.sort();
+        assert_eq!(t, vec![g.index(0, 0), g.index(1, 0), g.index(1, 1), g.index(2, 1)]);
+    }
+
+    #[test]
+    fn diagonal_touches_corner_cells() {
+        let mut g = Grid2::new(3, 3).unwrap();
+        let mut t = g.touched_cells(0, g.index(2, 2));
+        t.sort();
+        // The three diagonal cells plus the four cells meeting the diagonal at the two corners.
+        assert_eq!(t, vec![0, 1, 3, 4, 5, 7, 8]);
+        assert!(g.line_of_sight(0, 8));
+        g.set_blocked(2, 1, true); // touches the corner (2, 2)
+        assert!(!g.line_of_sight(0, 8) && !g.line_of_sight(8, 0));
+        // A straight row only touches its own row.
+        assert_eq!(g.touched_cells(0, 2), vec![0, 1, 2]);
+    }
+
+    #[test]
+    fn shallow_line() {
+        // (0.5,0.5) -> (5.5,1.5): crosses y = 1 at x = 3, a corner: touches
+        // columns 0..=2 in row 0 and 2..=5 in row 1, plus (3,0) at that corner.
+        let g = Grid2::new(6, 2).unwrap();
+        let mut t = g.touched_cells(0, g.index(5, 1));
+        t.sort();
+        let mut want = vec![0, 1, 2, 3, g.index(2, 1), g.index(3, 1), g.index(4, 1), g.index(5, 1)];
+        want.sort();
+        assert_eq!(t, want);
+    }
+
+    #[test]
+    fn grid3_space_diagonal_touches_the_whole_box() {
+        let g = Grid3::new(2, 2, 2).unwrap();
+        let mut t = g.touched_cells(0, 7);
+        t.sort();
+        assert_eq!(t, (0..8).collect::<Vec<_>>());
+        let mut g = g;
+        g.set_blocked(1, 0, 0, true);
+        assert!(!g.line_of_sight(0, 7));
+        assert!(g.line_of_sight(0, g.index(0, 1, 1)));
     }
 }

@@ -135,3 +135,44 @@ pub fn maximin_in(
     }
     Ok(None)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn deepest_channel() {
+        // Rows (j = 0, 1, 2) of a 5 x 3 depth map; the straight route crosses a
+        // 1 m sill, the northern detour never goes below 3 m.
+        let rows = [[10.0, 2.0, 2.0, 2.0, 10.0], [10.0, 10.0, 1.0, 10.0, 10.0], [10.0, 3.0, 3.0, 3.0, 10.0]];
+        let values: Vec<f64> = rows.iter().flatten().copied().collect();
+        let g = Grid2::new(5, 3).unwrap();
+        let b = maximin(&g, &values, g.index(0, 1), g.index(4, 1)).unwrap().unwrap();
+        assert_eq!(b.value, 3.0);
+        assert_eq!(g.coords(b.cell).1, 2);
+        assert_eq!(values[b.cell], 3.0);
+        assert_eq!((b.path[0], *b.path.last().unwrap()), (g.index(0, 1), g.index(4, 1)));
+        assert!(b.path.iter().all(|&c| values[c] >= 3.0));
+    }
+
+    #[test]
+    fn diagonal_depends_on_its_corners() {
+        let g = Grid2::new(2, 2).unwrap();
+        let values = [5.0, 1.0, 1.0, 5.0];
+        let b = maximin(&g, &values, 0, 3).unwrap().unwrap();
+        assert_eq!(b.value, 1.0);
+        assert!(b.cell == 1 || b.cell == 2);
+    }
+
+    #[test]
+    fn unreachable_and_bad_input() {
+        let mut g = Grid2::new(3, 1).unwrap();
+        g.set_blocked(1, 0, true);
+        assert_eq!(maximin(&g, &[1.0; 3], 0, 2).unwrap(), None);
+        assert_eq!(maximin(&g, &[1.0, f64::NAN, 1.0], 0, 2), Err(SearchError::NanValue(1)));
+        assert!(matches!(maximin(&g, &[1.0; 2], 0, 2), Err(SearchError::BufferLength { .. })));
+        let g = Grid2::new(1, 1).unwrap();
+        let b = maximin(&g, &[-4.0], 0, 0).unwrap().unwrap();
+        assert_eq!((b.value, b.cell, b.path), (-4.0, 0, vec![0]));
+    }
+}

@@ -65,10 +65,10 @@ where
     check_endpoints(grid, start, goal)?;
     arena.reset(grid.cell_count());
     arena.g[start] = 0.0;
-    arena.open.push(OpenEntry { f: heuristic(start), g: 0.0, cell: start as u32 });
+    arena.open.push(OpenEntry::new(heuristic(start), 0.0, start));
     let mut expansions = 0u64;
     while let Some(entry) = arena.open.pop() {
-        let u = entry.cell as usize;
+        let u = entry.cell();
         if arena.is_closed(u) {
             continue;
         }
@@ -110,10 +110,55 @@ where
                 if ng < g[v] {
                     g[v] = ng;
                     parent[v] = from;
-                    open.push(OpenEntry { f: ng + heuristic(v), g: ng, cell: v as u32 });
+                    let h = heuristic(v);
+                    debug_assert!(!h.is_nan(), "heuristic is NaN at cell {v}");
+                    open.push(OpenEntry::new(ng + h, ng, v));
                 }
             }
         });
     }
     Ok(SearchOutcome { status: SearchStatus::NoPath, path: Vec::new(), cost: f64::INFINITY, expansions })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{astar, Grid2, Grid3};
+
+    #[test]
+    fn straight_line_on_empty_grids() {
+        let g = Grid2::new(10, 10).unwrap();
+        let t = g.index(9, 5);
+        let o =
+            theta_star(&g, 0, t, |a, b, _| Some(g.euclidean(a, b)), |c| g.euclidean(c, t), &Limits::none()).unwrap();
+        assert_eq!(o.path, vec![0, t]);
+        assert!((o.cost - 106f64.sqrt()).abs() < 1e-9);
+        let g = Grid3::new(8, 8, 8).unwrap();
+        let t = g.index(7, 2, 5);
+        let o =
+            theta_star(&g, 0, t, |a, b, _| Some(g.euclidean(a, b)), |c| g.euclidean(c, t), &Limits::none()).unwrap();
+        assert_eq!(o.path, vec![0, t]);
+        assert!((o.cost - 78f64.sqrt()).abs() < 1e-9);
+    }
+
+    #[test]
+    fn bends_at_the_wall_end_and_beats_astar() {
+        // A wall x = 3, y = 0..=4 on a 7 x 7 grid; from (0,0) to (6,0).
+        let mut g = Grid2::new(7, 7).unwrap();
+        for j in 0..5 {
+            g.set_blocked(3, j, true);
+        }
+        let (s, t) = (g.index(0, 0), g.index(6, 0));
+        let o =
+            theta_star(&g, s, t, |a, b, _| Some(g.euclidean(a, b)), |c| g.euclidean(c, t), &Limits::none()).unwrap();
+        let a = astar(&g, s, t, |a, b, _| Some(g.step_length(a, b)), |c| g.octile(c, t), &Limits::none()).unwrap();
+        assert!(o.cost < a.cost - 0.5, "{} vs {}", o.cost, a.cost);
+        // Turning cells see each other and the cost is their summed length.
+        let sum: f64 = o.path.windows(2).map(|w| g.euclidean(w[0], w[1])).sum();
+        assert!((sum - o.cost).abs() < 1e-9);
+        assert!(o.path.windows(2).all(|w| g.line_of_sight(w[0], w[1])));
+        // Passing the wall end (3,4) needs row 5 clear of its corners: the
+        // best turning points are (2,5) and (4,5): 2 * sqrt(4 + 25) + 2.
+        assert!(o.cost >= 2.0 * 29f64.sqrt() + 2.0 - 1e-9);
+    }
 }

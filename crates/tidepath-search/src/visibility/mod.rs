@@ -39,9 +39,7 @@
 //! the pieces are the path).
 
 mod geometry;
-
-use std::cmp::Ordering;
-use std::collections::BinaryHeap;
+mod route;
 
 use geometry::{
     bitangent_angles, dist, in_rect, on_circle, point_tangent_angles, segment_enters_circle, segment_enters_polygon,
@@ -229,7 +227,11 @@ impl Graph<'_> {
     }
 
     /// Adds the segment between two (existing or new tangent) nodes if free.
-    fn try_segment(&mut self, a: (Point, Option<usize>, Option<(usize, f64)>), b: (Point, Option<usize>, Option<(usize, f64)>)) {
+    fn try_segment(
+        &mut self,
+        a: (Point, Option<usize>, Option<(usize, f64)>),
+        b: (Point, Option<usize>, Option<(usize, f64)>),
+    ) {
         if !self.segment_free(a.0, b.0) {
             return;
         }
@@ -328,7 +330,7 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
         }
     }
     // Arcs between angularly consecutive tangent points.
-    for ci in 0..circles.len() {
+    for (ci, circle) in circles.iter().enumerate() {
         let mut pts = std::mem::take(&mut g.on_circle[ci]);
         pts.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
         let m = pts.len();
@@ -337,15 +339,15 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
                 let (a0, n0) = pts[k];
                 let (a1, n1) = pts[(k + 1) % m];
                 let sweep = if k + 1 < m { a1 - a0 } else { a1 + std::f64::consts::TAU - a0 };
-                let arc = Arc { circle: circles[ci], start: a0, sweep };
+                let arc = Arc { circle: *circle, start: a0, sweep };
                 if g.arc_free(&arc, ci) {
-                    g.add_edge(n0, n1, circles[ci].radius * sweep, EdgeKind::Arc { circle: ci, sweep });
+                    g.add_edge(n0, n1, circle.radius * sweep, EdgeKind::Arc { circle: ci, sweep });
                 }
             }
         }
         g.on_circle[ci] = pts;
     }
-    Ok(dijkstra(&g, 0, 1).map(|(length, route)| build_path(&g, length, &route, arc_step)))
+    Ok(route::dijkstra(&g, 0, 1).map(|(length, r)| route::build_path(&g, length, &r, arc_step)))
 }
 
 fn validate(scene: &Scene, start: Point, goal: Point, arc_step: f64) -> Result<(), VisError> {
@@ -394,95 +396,5 @@ fn ccw(v: &[Point]) -> Vec<Point> {
     out
 }
 
-#[derive(Debug, Clone, Copy)]
-struct Open {
-    d: f64,
-    node: usize,
-}
-impl PartialEq for Open {
-    fn eq(&self, o: &Self) -> bool {
-        self.cmp(o) == Ordering::Equal
-    }
-}
-impl Eq for Open {}
-impl PartialOrd for Open {
-    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        Some(self.cmp(o))
-    }
-}
-impl Ord for Open {
-    fn cmp(&self, o: &Self) -> Ordering {
-        o.d.total_cmp(&self.d).then_with(|| o.node.cmp(&self.node))
-    }
-}
-
-/// Dijkstra from `s` to `t`; returns the length and the (node, edge used to
-/// reach it) route.
-fn dijkstra(g: &Graph, s: usize, t: usize) -> Option<(f64, Vec<(usize, Option<Edge>)>)> {
-    let n = g.nodes.len();
-    let mut d = vec![f64::INFINITY; n];
-    let mut from: Vec<Option<(usize, Edge)>> = vec![None; n];
-    let mut done = vec![false; n];
-    let mut heap = BinaryHeap::new();
-    d[s] = 0.0;
-    heap.push(Open { d: 0.0, node: s });
-    while let Some(Open { d: du, node: u }) = heap.pop() {
-        if done[u] {
-            continue;
-        }
-        done[u] = true;
-        if u == t {
-            let mut route = vec![(t, from[t].map(|f| f.1))];
-            let mut c = t;
-            while let Some((p, _)) = from[c] {
-                route.push((p, from[p].map(|f| f.1)));
-                c = p;
-            }
-            route.reverse();
-            return Some((du, route));
-        }
-        for e in &g.adj[u] {
-            let nd = du + e.len;
-            if nd < d[e.to] {
-                d[e.to] = nd;
-                from[e.to] = Some((u, *e));
-                heap.push(Open { d: nd, node: e.to });
-            }
-        }
-    }
-    None
-}
-
-fn build_path(g: &Graph, length: f64, route: &[(usize, Option<Edge>)], arc_step: f64) -> VisPath {
-    let mut pieces = Vec::new();
-    let mut polyline = vec![g.nodes[route[0].0].pos];
-    for w in route.windows(2) {
-        let (a, b) = (w[0].0, w[1].0);
-        let edge = w[1].1.expect("every node after the first was reached by an edge");
-        let (pa, pb) = (g.nodes[a].pos, g.nodes[b].pos);
-        match edge.kind {
-            EdgeKind::Segment => {
-                if edge.len > 0.0 {
-                    pieces.push(Piece::Segment { from: pa, to: pb });
-                    polyline.push(pb);
-                }
-            }
-            EdgeKind::Arc { circle, sweep } => {
-                let c = g.scene.circles[circle];
-                let start_angle = g.nodes[a].on.expect("arc edges join tangent points").1;
-                if sweep != 0.0 {
-                    pieces.push(Piece::Arc { centre: c.centre, radius: c.radius, start_angle, sweep });
-                    let steps = (sweep.abs() / arc_step).ceil().max(1.0) as usize;
-                    for k in 1..steps {
-                        polyline.push(on_circle(&c, start_angle + sweep * k as f64 / steps as f64));
-                    }
-                    polyline.push(pb);
-                }
-            }
-        }
-    }
-    if polyline.len() == 1 {
-        polyline.push(g.nodes[route[route.len() - 1].0].pos);
-    }
-    VisPath { length, pieces, polyline }
-}
+#[cfg(test)]
+mod tests;
