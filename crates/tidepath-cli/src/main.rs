@@ -114,6 +114,13 @@ fn parse() -> Result<Cli, ExitCode> {
 }
 
 fn main() -> ExitCode {
+    // Piped into `head`, a closed pipe should end the program quietly, as for any Unix tool,
+    // not panic in `println!`.
+    #[cfg(unix)]
+    // SAFETY: restoring the default action of SIGPIPE before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let cli = match parse() {
         Ok(cli) => cli,
         Err(code) => return code,

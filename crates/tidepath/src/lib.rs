@@ -29,6 +29,7 @@ pub mod mission;
 pub mod optim;
 pub mod path;
 pub mod planner;
+pub mod raster;
 pub mod registry;
 pub mod rng;
 pub mod scenario;

@@ -13,6 +13,7 @@ const ORDER: &[&str] = &[
     "vehicle",
     "mission",
     "validity",
+    "raster",
     "path",
     "cost",
     "encoding",

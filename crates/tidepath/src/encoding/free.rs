@@ -78,11 +78,16 @@ impl Encoding for FreeWaypoints {
         out.push(self.goal);
     }
 
-    /// Interior waypoints equally spaced in arc length along `path`.
+    /// The interior points of `path` when it has exactly `n` of them, else interior
+    /// waypoints equally spaced in arc length along it.
     fn encode(&self, path: &[Vec3]) -> Vec<f64> {
         let mut x = Vec::with_capacity(self.lower.len());
         for i in 1..=self.n {
-            let p = super::point_at_fraction(path, i as f64 / (self.n + 1) as f64);
+            let p = if path.len() == self.n + 2 {
+                path[i]
+            } else {
+                super::point_at_fraction(path, i as f64 / (self.n + 1) as f64)
+            };
             let u = (p - self.min) / self.size.max(Vec3::splat(f64::MIN_POSITIVE));
             x.extend_from_slice(&[u.x, u.y]);
             if self.three_d {

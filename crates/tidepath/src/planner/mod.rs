@@ -7,11 +7,15 @@
 //! every planner the same way: it checks start and goal first, runs the planner, smooths,
 //! evaluates each path with the shared path evaluation and sets the [`Status`].
 
+pub mod grid_search;
+pub mod hybrid;
 mod objective;
 mod optimizer_planner;
+pub mod reachability;
 pub mod registry;
 pub mod solve;
 mod status;
+pub mod visibility;
 
 pub use objective::PathObjective;
 pub use optimizer_planner::OptimizerPlanner;
@@ -60,6 +64,8 @@ pub enum Claim {
     Optimal,
     /// No path exists; the reason names the bottleneck.
     Unreachable(String),
+    /// A line to add to the reason when the plan is not feasible (why this planner failed).
+    Hint(String),
 }
 
 /// Search statistics, in each planner's own units.

@@ -2,6 +2,8 @@
 //! ranges and defaults) and constructor. `tidepath planners`, `--help`, "known: ..." errors and
 //! the generic planner tests all read it; adding a planner is one new file and one line here.
 
+use super::grid_search::{GridParams, GridSearch};
+use super::hybrid::{Hybrid, HybridParams};
 use super::{OptimizerPlanner, Planner};
 use crate::config::from_value;
 use crate::encoding::EncodingSpec;
@@ -69,6 +71,52 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
         params: crate::optim::de::PARAMS,
         defaults: defaults_of::<DeParams>,
         build: BuildPlanner::Optimizer(|v, p| optimizer(v, p, DeParams::check, De::new)),
+    },
+    Entry {
+        id: "astar",
+        description: "A* on the world's raster (8-connected 2-D, 26-connected 3-D), shortest or quickest; exact on its graph",
+        citation: "Hart, Nilsson & Raphael 1968; reference planner",
+        params: super::grid_search::PARAMS,
+        defaults: defaults_of::<GridParams>,
+        build: BuildPlanner::Direct(|s| {
+            Ok(Box::new(GridSearch::new("astar", GridParams::from_settings(s, "astar")?, false)))
+        }),
+    },
+    Entry {
+        id: "theta-star",
+        description: "any-angle Theta* on the world's raster, shortest or quickest",
+        citation: "Nash, Daniel, Koenig & Felner 2007; reference planner",
+        params: super::grid_search::PARAMS,
+        defaults: defaults_of::<GridParams>,
+        build: BuildPlanner::Direct(|s| {
+            Ok(Box::new(GridSearch::new("theta-star", GridParams::from_settings(s, "theta-star")?, true)))
+        }),
+    },
+    Entry {
+        id: "visibility",
+        description: "exact shortest path among discs and boxes in a 2-D world (tangent visibility graph)",
+        citation: "Lozano-Perez & Wesley 1979; tangent graphs after Liu & Arimoto 1992",
+        params: &[],
+        defaults: crate::registry::no_params,
+        build: BuildPlanner::Direct(|s| {
+            let mut t = s.params.clone();
+            t.remove("population");
+            if let Some(k) = t.keys().next() {
+                return Err(Error::input(format!("planner.params.visibility.{k}"), "visibility has no parameters"));
+            }
+            Ok(Box::new(super::visibility::Visibility))
+        }),
+    },
+    Entry {
+        id: "hybrid",
+        description: "a Theta* or visibility reference refined by DE over free waypoints under the scenario's cost; turns back where routes must",
+        citation: "tidepath",
+        params: super::hybrid::PARAMS,
+        defaults: defaults_of::<HybridParams>,
+        build: BuildPlanner::Direct(|s| {
+            let p: HybridParams = from_value(toml::Value::Table(s.params.clone()), "planner.params.hybrid")?;
+            Ok(Box::new(Hybrid::new(p)?))
+        }),
     },
 ];
 

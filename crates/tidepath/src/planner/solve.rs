@@ -118,7 +118,6 @@ pub fn solve(
     observer: &mut dyn FnMut(&Progress),
 ) -> Result<Plan> {
     termination.check()?;
-    planner.check(problem)?;
     let id = planner.id().to_string();
     let models: Vec<PathModel<'_>> = (0..problem.missions.len()).map(|i| problem.path_model(i)).collect();
     let unplanned = |status, reason| Plan {
@@ -139,6 +138,14 @@ pub fn solve(
             return Ok(unplanned(Status::InvalidGoal, format!("{}: {why}", mission_field(problem, i, "goal"))));
         }
     }
+
+    for i in 0..problem.missions.len() {
+        if let Some(reason) = super::reachability::unreachable(problem, i) {
+            return Ok(unplanned(Status::Unreachable, reason));
+        }
+    }
+    // Whether this planner takes this problem (a setting, or a world it does not cover).
+    planner.check(problem)?;
 
     let out = planner.plan(problem, termination, rng, options.run, observer);
     if let Some(Claim::Unreachable(reason)) = &out.claim {
@@ -186,6 +193,10 @@ pub fn solve(
             ),
             _ => (Status::Infeasible, first),
         }
+    };
+    let reason = match (&out.claim, status) {
+        (Some(Claim::Hint(h)), Status::Infeasible | Status::Timeout) => format!("{reason}; {h}"),
+        _ => reason,
     };
     Ok(Plan { planner: id, status, reason, missions, cost, stats: out.stats })
 }

@@ -291,7 +291,8 @@ impl Default for CostSpec {
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct PlannerSpec {
-    /// The planner `plan` uses when `--planner` is not given.
+    /// The planner `plan` uses when `--planner` is not given: `hybrid` unless the scenario
+    /// says otherwise (it is the most reliable on the built-in scenarios, see README).
     pub id: String,
     pub iterations: Option<u64>,
     pub evaluations: Option<u64>,
@@ -307,7 +308,7 @@ pub struct PlannerSpec {
 impl Default for PlannerSpec {
     fn default() -> Self {
         Self {
-            id: "pso".into(),
+            id: "hybrid".into(),
             iterations: Some(200),
             evaluations: None,
             time_limit_s: None,

@@ -109,6 +109,19 @@ impl CurrentGrid {
     /// Largest horizontal speed at time t over the nodes of the cells that touch `bounds`.
     /// Exact: an interpolated vector is a convex combination of node vectors, so its length
     /// never exceeds the longest of them.
+    /// The largest horizontal speed anywhere and any time: bilinear and linear-in-time
+    /// interpolation take convex combinations of node vectors, whose length never exceeds the
+    /// longest node vector.
+    pub fn speed_bound(&self) -> f64 {
+        let mut peak: f64 = 0.0;
+        for (u, v) in self.u.iter().zip(&self.v) {
+            for (a, b) in u.iter().zip(v) {
+                peak = peak.max(a.hypot(*b));
+            }
+        }
+        peak
+    }
+
     pub(super) fn max_speed(&self, bounds: &Aabb, t: f64) -> f64 {
         let g = &self.grid;
         let (i0, j0, _, _) = g.locate(bounds.min.x, bounds.min.y);

@@ -91,6 +91,37 @@ impl ElevationGrid {
         lo + (hi - lo) * v
     }
 
+    /// The minimum over a rectangle, exactly: inside each grid cell the surface is bilinear,
+    /// so its minimum over the part of the rectangle in that cell sits at a corner of that part.
+    /// Points outside the grid see the edge cells, as in `locate`. Cost: one evaluation per
+    /// corner of each grid cell the rectangle overlaps.
+    pub(super) fn min_in(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
+        let g = &self.grid;
+        let (cx, cy) = ((g.nx - 1) as f64, (g.ny - 1) as f64);
+        let fx0 = ((x0.min(x1) - g.x0) / g.dx).clamp(0.0, cx);
+        let fx1 = ((x0.max(x1) - g.x0) / g.dx).clamp(0.0, cx);
+        let fy0 = ((y0.min(y1) - g.y0) / g.dy).clamp(0.0, cy);
+        let fy1 = ((y0.max(y1) - g.y0) / g.dy).clamp(0.0, cy);
+        let (i0, i1) = ((fx0 as usize).min(g.nx - 2), (fx1 as usize).min(g.nx - 2));
+        let (j0, j1) = ((fy0 as usize).min(g.ny - 2), (fy1 as usize).min(g.ny - 2));
+        let mut m = f64::INFINITY;
+        for j in j0..=j1 {
+            let vl = (fy0 - j as f64).clamp(0.0, 1.0);
+            let vh = (fy1 - j as f64).clamp(0.0, 1.0);
+            for i in i0..=i1 {
+                let ul = (fx0 - i as f64).clamp(0.0, 1.0);
+                let uh = (fx1 - i as f64).clamp(0.0, 1.0);
+                m = m
+                    .min(self.cell_value(i, j, ul, vl))
+                    .min(self.cell_value(i, j, uh, vl))
+                    .min(self.cell_value(i, j, ul, vh))
+                    .min(self.cell_value(i, j, uh, vh));
+            }
+        }
+        // The same rounding allowance as the upper bound, on the safe side.
+        m - self.slack
+    }
+
     /// Small rectangles (at most 2 x 2 cells) get the exact maximum: inside a cell the surface is
     /// bilinear, hence linear along each axis, so its max over a sub-rectangle sits at a corner.
     /// That is what makes the bound tight as the rectangle shrinks, which the branch and bound

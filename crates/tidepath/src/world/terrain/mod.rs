@@ -54,6 +54,17 @@ impl Terrain {
         }
     }
 
+    /// A lower bound of the elevation over the closed rectangle [x0, x1] x [y0, y1]: never
+    /// above the true minimum. Optimistic rasterisations use it to prove a cell blocked
+    /// everywhere.
+    pub fn min_elevation_in(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
+        match self {
+            Terrain::None => f64::NEG_INFINITY,
+            Terrain::Peaks(p) => p.min_in(x0, y0, x1, y1),
+            Terrain::Grid(g) => g.min_in(x0, y0, x1, y1),
+        }
+    }
+
     /// The horizontal length over which the seabed shape changes appreciably (the narrowest
     /// peak width or the finer grid spacing); `None` for a flat or absent seabed. Segment
     /// queries scale their subdivision resolution by it.

@@ -148,6 +148,25 @@ impl GaussianPeaks {
         }
     }
 
+    /// Lower bound over a rectangle: each peak at the point of the rectangle where it is
+    /// lowest (the farthest for a positive peak, the nearest for a negative one); the ceiling
+    /// only caps, so min(bound, ceiling) stays a lower bound.
+    pub(super) fn min_in(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
+        let mut z = self.base;
+        for p in &self.peaks {
+            let (dx, dy) = if p.height >= 0.0 {
+                ((x0 - p.x).abs().max((x1 - p.x).abs()), (y0 - p.y).abs().max((y1 - p.y).abs()))
+            } else {
+                ((x0 - p.x).max(p.x - x1).max(0.0), (y0 - p.y).max(p.y - y1).max(0.0))
+            };
+            z += p.term(dx, dy);
+        }
+        match self.ceiling {
+            Some(c) => z.min(c),
+            None => z,
+        }
+    }
+
     pub(super) fn min_sigma(&self) -> Option<f64> {
         self.peaks.iter().map(|p| p.sigma_x.min(p.sigma_y)).filter(|s| *s > 0.0).reduce(f64::min)
     }

@@ -1,0 +1,88 @@
+//! The cheap, sound check every planner gets before it runs: is the goal reachable at all for
+//! this vehicle? On an optimistic rasterisation (a cell counts as blocked only if it is blocked
+//! everywhere, see [`crate::raster`]) the maximin path between start and goal gives the deepest
+//! water any route must cross; if even that is too shallow for the vehicle, or fixed obstacles
+//! cut start from goal, no path exists and the plan's status is `unreachable`, with the
+//! bottleneck named. The check never calls a reachable goal unreachable: its bounds only err
+//! towards "passable".
+
+use tidepath_search::{maximin, Grid2};
+
+use super::Problem;
+use crate::geom::Vec3;
+use crate::raster::obstacle_fills;
+use crate::world::Dims;
+
+/// Cells on the longer side of the domain.
+const CELLS_LONG_SIDE: f64 = 512.0;
+
+/// `Some(reason)` when mission `i` of `problem` provably has no path.
+pub fn unreachable(problem: &Problem<'_>, i: usize) -> Option<String> {
+    let world = problem.world;
+    let m = &problem.missions[i];
+    let v = &m.vehicle;
+    let b = &world.bounds;
+    let (w, h) = (b.max.x - b.min.x, b.max.y - b.min.y);
+    // Fine cells: a ridge narrower than a cell cannot be proved to block (a cell is blocked
+    // only if it is blocked everywhere).
+    let cell = w.max(h) / CELLS_LONG_SIDE;
+    let nx = ((w / cell).ceil() as usize).clamp(1, 4096);
+    let ny = ((h / cell).ceil() as usize).clamp(1, 4096);
+    let (dx, dy) = (w / nx as f64, h / ny as f64);
+    // The highest z the vehicle may use, and the lowest.
+    let (z_top, z_bottom) = match world.dims {
+        Dims::Two => (m.start.z, m.start.z),
+        Dims::Three => (b.max.z.min(v.z_max()), b.min.z.max(v.z_min())),
+    };
+    let safety = v.safety_distance;
+    let needed = safety - z_top;
+    let mut depth = vec![0.0; nx * ny];
+    let mut blocked = vec![false; nx * ny];
+    for j in 0..ny {
+        for ii in 0..nx {
+            let (xa, ya) = (b.min.x + ii as f64 * dx, b.min.y + j as f64 * dy);
+            let (xb, yb) = (xa + dx, ya + dy);
+            let c = ii + nx * j;
+            // Water depth at the deepest point of the cell (+inf without a seabed).
+            depth[c] = -world.terrain.min_elevation_in(xa, ya, xb, yb);
+            let corners = [
+                Vec3::new(xa, ya, z_bottom),
+                Vec3::new(xb, ya, z_bottom),
+                Vec3::new(xa, yb, z_bottom),
+                Vec3::new(xb, yb, z_bottom),
+                Vec3::new(xa, ya, z_top),
+                Vec3::new(xb, ya, z_top),
+                Vec3::new(xa, yb, z_top),
+                Vec3::new(xb, yb, z_top),
+            ];
+            blocked[c] = obstacle_fills(world, &corners, safety);
+        }
+    }
+    let at = |p: Vec3| {
+        let i = (((p.x - b.min.x) / dx).floor().max(0.0) as usize).min(nx - 1);
+        let j = (((p.y - b.min.y) / dy).floor().max(0.0) as usize).min(ny - 1);
+        i + nx * j
+    };
+    let (s, g) = (at(m.start), at(m.goal));
+    // Start and goal were checked valid, so their cells are not blocked everywhere; the
+    // obstacle test is on whole cells, which may still contain a valid point: free them.
+    blocked[s] = false;
+    blocked[g] = false;
+    let depth: Vec<f64> = depth.iter().map(|d| if d.is_nan() { f64::INFINITY } else { *d }).collect();
+    let grid = Grid2::from_blocked(nx, ny, blocked).ok()?;
+    let who = if problem.missions.len() > 1 { format!("{}: ", m.name) } else { String::new() };
+    match maximin(&grid, &depth, s, g) {
+        Ok(None) => {
+            Some(format!("{who}goal unreachable: fixed obstacles and the domain's edges separate start and goal"))
+        }
+        Ok(Some(bn)) if bn.value < needed => {
+            let (ci, cj) = (bn.cell % nx, bn.cell / nx);
+            let (x, y) = (b.min.x + (ci as f64 + 0.5) * dx, b.min.y + (cj as f64 + 0.5) * dy);
+            Some(format!(
+                "{who}goal unreachable: the deepest water connecting start and goal is {:.1} m at ({x:.0}, {y:.0}); this vehicle needs {needed:.1} m",
+                bn.value.max(0.0)
+            ))
+        }
+        _ => None,
+    }
+}

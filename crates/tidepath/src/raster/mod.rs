@@ -1,0 +1,191 @@
+//! Worlds rasterised into occupancy grids for graph search, at a chosen resolution, with the
+//! vehicle's safety distance and depth band applied. Two rasterisations, named for what they
+//! guarantee:
+//!
+//! * **conservative**: a free cell is free everywhere in it (every point of the closed cell
+//!   keeps the safety distance from the seabed and every fixed obstacle), so a path through
+//!   free cells is clear of them;
+//! * **optimistic**: a blocked cell is blocked everywhere in it (no point of the closed cell
+//!   keeps the safety distance), so if start and goal are not connected on it, no path exists
+//!   at all.
+//!
+//! Both rest on sound bounds: the terrain's upper and lower elevation bounds over a rectangle
+//! and, for obstacles, the distance from the cell centre (minus half the cell diagonal) for
+//! conservative cells and all cell corners inside the inflated obstacle (obstacles are convex)
+//! for optimistic ones. Closed-cell semantics make the grid rule without corner cutting sound
+//! for the optimistic grid too: two diagonal cells whose shared corner lies in blocked cells
+//! are not connected in the plane either.
+//!
+//! 2-D worlds rasterise the plane of the mission (z of the start); 3-D worlds rasterise the
+//! vehicle's depth band into voxel layers. Moving obstacles are left out of both: planners
+//! check them edge by edge with the motion validator, at the time the vehicle is there.
+
+// `!(a >= b)` is deliberate: a NaN bound must block a conservative cell.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use tidepath_search::{Grid2, Grid3};
+
+use crate::error::{Error, Result};
+use crate::geom::Vec3;
+use crate::vehicle::Vehicle;
+use crate::world::{Dims, World};
+
+/// Most cells a raster may have: 16 million (the search buffers then take about 400 MB).
+pub const MAX_CELLS: usize = 1 << 24;
+
+/// A rasterised world.
+#[derive(Clone, Debug)]
+pub struct Raster {
+    pub x0: f64,
+    pub y0: f64,
+    /// Cell sizes (cells tile the domain exactly, so they need not be square).
+    pub dx: f64,
+    pub dy: f64,
+    pub nx: usize,
+    pub ny: usize,
+    /// Layer k spans [z0 + k dz, z0 + (k + 1) dz]; one layer at the mission plane in 2-D.
+    pub z0: f64,
+    pub dz: f64,
+    pub nz: usize,
+    pub three_d: bool,
+    /// `true` where the cell may not be entered, for each rasterisation, flat index
+    /// `i + nx (j + ny k)`.
+    pub conservative: Vec<bool>,
+    pub optimistic: Vec<bool>,
+}
+
+fn obstacle_blocks(world: &World, c: Vec3, half_diag: f64, safety: f64) -> bool {
+    world
+        .obstacles
+        .iter()
+        .filter(|o| o.velocity == Vec3::ZERO)
+        .any(|o| !(o.shape.distance_to_point(c) - half_diag >= safety))
+}
+
+pub(crate) fn obstacle_fills(world: &World, corners: &[Vec3], safety: f64) -> bool {
+    world
+        .obstacles
+        .iter()
+        .filter(|o| o.velocity == Vec3::ZERO)
+        .any(|o| corners.iter().all(|&p| o.contains(p, 0.0, safety)))
+}
+
+impl Raster {
+    /// Rasterises `world` for `vehicle` with cells of about `cell` metres (horizontal), the
+    /// 2-D plane at `plane_z`. In 3-D the layers are about `cell_z` metres thick.
+    pub fn new(world: &World, vehicle: &Vehicle, cell: f64, cell_z: f64, plane_z: f64) -> Result<Self> {
+        let b = &world.bounds;
+        let (w, h) = (b.max.x - b.min.x, b.max.y - b.min.y);
+        if !(cell > 0.0 && cell.is_finite() && cell_z > 0.0 && cell_z.is_finite()) {
+            return Err(Error::input("raster", format!("cell size must be positive, got {cell} and {cell_z}")));
+        }
+        let nx = ((w / cell).ceil() as usize).max(1);
+        let ny = ((h / cell).ceil() as usize).max(1);
+        let three_d = world.dims == Dims::Three;
+        let (z0, dz, nz) = if three_d {
+            let lo = b.min.z.max(vehicle.z_min());
+            let hi = b.max.z.min(vehicle.z_max());
+            if hi < lo {
+                return Err(Error::input("vehicle.depth_min", "the depth band and the domain do not overlap"));
+            }
+            let nz = (((hi - lo) / cell_z).ceil() as usize).max(1);
+            (lo, ((hi - lo) / nz as f64).max(f64::MIN_POSITIVE), nz)
+        } else {
+            (plane_z, 0.0, 1)
+        };
+        let cells = nx.checked_mul(ny).and_then(|n| n.checked_mul(nz)).filter(|&n| n <= MAX_CELLS);
+        let Some(cells) = cells else {
+            return Err(Error::input(
+                "raster",
+                format!("{nx} x {ny} x {nz} cells exceed the limit of {MAX_CELLS}; use coarser cells"),
+            ));
+        };
+        let (dx, dy) = (w / nx as f64, h / ny as f64);
+        let safety = vehicle.safety_distance;
+        let terrain = &world.terrain;
+        let mut r = Raster {
+            x0: b.min.x,
+            y0: b.min.y,
+            dx,
+            dy,
+            nx,
+            ny,
+            z0,
+            dz,
+            nz,
+            three_d,
+            conservative: vec![false; cells],
+            optimistic: vec![false; cells],
+        };
+        for j in 0..ny {
+            for i in 0..nx {
+                let (xa, ya) = (r.x0 + i as f64 * dx, r.y0 + j as f64 * dy);
+                let (xb, yb) = (xa + dx, ya + dy);
+                let h_max = terrain.max_elevation_in(xa, ya, xb, yb);
+                let h_min = terrain.min_elevation_in(xa, ya, xb, yb);
+                for k in 0..nz {
+                    let (za, zb) = if three_d { (z0 + k as f64 * dz, z0 + (k + 1) as f64 * dz) } else { (z0, z0) };
+                    let centre = Vec3::new(0.5 * (xa + xb), 0.5 * (ya + yb), 0.5 * (za + zb));
+                    let half_diag = 0.5 * (dx * dx + dy * dy + (zb - za) * (zb - za)).sqrt();
+                    let corners = [
+                        Vec3::new(xa, ya, za),
+                        Vec3::new(xb, ya, za),
+                        Vec3::new(xa, yb, za),
+                        Vec3::new(xb, yb, za),
+                        Vec3::new(xa, ya, zb),
+                        Vec3::new(xb, ya, zb),
+                        Vec3::new(xa, yb, zb),
+                        Vec3::new(xb, yb, zb),
+                    ];
+                    let idx = i + nx * (j + ny * k);
+                    // Conservative: the lowest point of the voxel against the highest seabed.
+                    r.conservative[idx] = !(za - h_max >= safety) || obstacle_blocks(world, centre, half_diag, safety);
+                    // Optimistic: even the highest point against the lowest seabed fails.
+                    r.optimistic[idx] = zb - h_min < safety || obstacle_fills(world, &corners, safety);
+                }
+            }
+        }
+        Ok(r)
+    }
+
+    pub fn len(&self) -> usize {
+        self.nx * self.ny * self.nz
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The centre of cell `c`.
+    pub fn centre(&self, c: usize) -> Vec3 {
+        let i = c % self.nx;
+        let j = (c / self.nx) % self.ny;
+        let k = c / (self.nx * self.ny);
+        let z = if self.three_d { self.z0 + (k as f64 + 0.5) * self.dz } else { self.z0 };
+        Vec3::new(self.x0 + (i as f64 + 0.5) * self.dx, self.y0 + (j as f64 + 0.5) * self.dy, z)
+    }
+
+    /// The cell holding `p` (clamped to the grid).
+    pub fn cell_of(&self, p: Vec3) -> usize {
+        let f = |v: f64, o: f64, d: f64, n: usize| (((v - o) / d).floor().max(0.0) as usize).min(n - 1);
+        let i = f(p.x, self.x0, self.dx, self.nx);
+        let j = f(p.y, self.y0, self.dy, self.ny);
+        let k = if self.three_d { f(p.z, self.z0, self.dz, self.nz) } else { 0 };
+        i + self.nx * (j + self.ny * k)
+    }
+
+    /// The conservative (`true`) or optimistic grid, for 2-D rasters.
+    pub fn grid2(&self, conservative: bool) -> Grid2 {
+        let blocked = if conservative { &self.conservative } else { &self.optimistic };
+        Grid2::from_blocked(self.nx, self.ny, blocked.clone()).expect("raster sizes are checked")
+    }
+
+    /// The conservative or optimistic grid, for 3-D rasters.
+    pub fn grid3(&self, conservative: bool) -> Grid3 {
+        let blocked = if conservative { &self.conservative } else { &self.optimistic };
+        Grid3::from_blocked(self.nx, self.ny, self.nz, blocked.clone()).expect("raster sizes are checked")
+    }
+}
+
+#[cfg(test)]
+mod tests;
