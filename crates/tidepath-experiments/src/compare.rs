@@ -40,6 +40,59 @@ pub struct Comparison {
     pub records: Vec<RunRecord>,
     /// Timing field: wall time of the whole experiment (s).
     pub total_wall_s: f64,
+    /// The reference plan the gaps are measured against, when one was run.
+    #[serde(default)]
+    pub reference: Option<Reference>,
+}
+
+/// A reference planner's result on the scenario: what "the optimum" means for the gap column.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Reference {
+    pub planner: String,
+    /// Its plan's status (`exact` when the reference is provably optimal on its model).
+    pub status: String,
+    pub cost: f64,
+    pub length_m: Option<f64>,
+    pub travel_time_s: Option<f64>,
+}
+
+/// The reference planner for a scenario when none is named: the exact visibility graph where
+/// it applies (2-D discs and boxes), else Theta* on the world's raster (any-angle, never longer
+/// than A* on the same raster).
+pub fn default_reference(scenario: &Scenario) -> &'static str {
+    let cost = scenario.cost_model();
+    let applies = cost.as_ref().is_ok_and(|c| {
+        let p = scenario.problem(c.as_ref());
+        (0..p.missions.len()).all(|i| tidepath::planner::visibility::scene(&p, i, true).is_ok())
+    });
+    if applies {
+        "visibility"
+    } else {
+        "theta-star"
+    }
+}
+
+/// Runs `planner` once (master seed, run 0) as the reference; `None` if it finds no feasible
+/// plan (then no gap is reported).
+pub fn run_reference(scenario: &Scenario, planner: &str, seed: u64, budget: &RunBudget) -> Result<Option<Reference>> {
+    let mut req = request(budget, planner, seed);
+    // The reference runs with its own defaults, not the compared planners' budget.
+    req.iterations = None;
+    req.evaluations = None;
+    req.population = None;
+    let r = scenario.plan(&req, &mut |_| {})?;
+    Ok(r.status.is_success().then(|| Reference {
+        planner: planner.to_string(),
+        status: r.status.id().to_string(),
+        cost: r.cost_value(),
+        length_m: r.length_m(),
+        travel_time_s: r.travel_time_s(),
+    }))
+}
+
+/// The gap of `cost` to the reference cost, in percent.
+pub fn gap_percent(cost: f64, reference: f64) -> f64 {
+    100.0 * (cost - reference) / reference.abs().max(f64::MIN_POSITIVE)
 }
 
 impl Comparison {
@@ -64,7 +117,8 @@ fn check_planners(planners: &[String]) -> Result<()> {
     Ok(())
 }
 
-/// Runs every planner `runs` times on a scenario.
+/// Runs every planner `runs` times on a scenario, and `reference` once (its gap column).
+#[allow(clippy::too_many_arguments)]
 pub fn compare_scenario(
     scenario: &Scenario,
     planners: &[String],
@@ -72,6 +126,7 @@ pub fn compare_scenario(
     master_seed: u64,
     budget: &RunBudget,
     jobs: usize,
+    reference: Option<&str>,
     on_done: &(dyn Fn(usize) + Sync),
 ) -> Result<Comparison> {
     check_planners(planners)?;
@@ -89,7 +144,17 @@ pub fn compare_scenario(
     let all = tasks(master_seed, &problems, planners, runs);
     let start = Instant::now();
     let records = execute(&all, jobs, |t| scenario_run(scenario, budget, t), on_done)?;
-    Ok(finish("scenario", problems, planners, runs, master_seed, budget, records, start))
+    let mut c = finish("scenario", problems, planners, runs, master_seed, budget, records, start);
+    if let Some(id) = reference {
+        c.reference = run_reference(scenario, id, master_seed, budget)?;
+        if let Some(r) = &c.reference {
+            for row in &mut c.rows {
+                row.gap_percent = Some(gap_percent(row.mean, r.cost));
+                row.best_gap_percent = Some(gap_percent(row.best, r.cost));
+            }
+        }
+    }
+    Ok(c)
 }
 
 fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
@@ -228,5 +293,6 @@ fn finish(
         rows,
         records,
         total_wall_s: start.elapsed().as_secs_f64(),
+        reference: None,
     }
 }

@@ -34,6 +34,11 @@ pub struct PlannerRow {
     /// for the first planner itself.
     pub mark: Option<String>,
     pub p_value: Option<f64>,
+    /// Gap of the mean and of the best cost to the reference plan's cost, in percent.
+    #[serde(default)]
+    pub gap_percent: Option<f64>,
+    #[serde(default)]
+    pub best_gap_percent: Option<f64>,
 }
 
 fn mean(xs: impl Iterator<Item = f64>) -> f64 {
@@ -88,6 +93,8 @@ pub fn rows_for(problem: &str, planners: &[String], records: &[RunRecord]) -> Ve
                 zeros_tiny: costs.iter().filter(|c| c.abs() < 1e-300).count(),
                 mark,
                 p_value,
+                gap_percent: None,
+                best_gap_percent: None,
             }
         })
         .collect()
@@ -121,9 +128,9 @@ pub fn markdown(rows: &[PlannerRow], functions: bool) -> String {
         out.push_str("|---|---|---|---|---|---|---|---|---|---|---|\n");
     } else {
         out.push_str(&format!(
-            "| planner | best | mean | std | worst | success | length m | travel s | evals/run | wall s/run | vs {reference} |\n"
+            "| planner | best | mean | std | worst | gap % best / mean | success | length m | travel s | evals/run | wall s/run | vs {reference} |\n"
         ));
-        out.push_str("|---|---|---|---|---|---|---|---|---|---|---|\n");
+        out.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     }
     for r in rows {
         let mark = match (&r.mark, r.p_value) {
@@ -147,8 +154,12 @@ pub fn markdown(rows: &[PlannerRow], functions: bool) -> String {
                 mark
             ));
         } else {
+            let gap = match (r.best_gap_percent, r.gap_percent) {
+                (Some(b), Some(m)) => format!("{b:.2} / {m:.2}"),
+                _ => "-".to_string(),
+            };
             out.push_str(&format!(
-                "| {} | {} | {} | {} | {} | {:.0}% | {} | {} | {:.0} | {} | {} |\n",
+                "| {} | {} | {} | {} | {} | {gap} | {:.0}% | {} | {} | {:.0} | {} | {} |\n",
                 r.planner,
                 num(r.best),
                 num(r.mean),

@@ -221,7 +221,7 @@ mod tests {
         let lim = Limits { deadline: Some(Instant::now() - Duration::from_millis(1)), ..Limits::none() };
         let o = astar(&g, 0, goal, f, |_| 0.0, &lim).unwrap();
         assert_eq!(o.status, SearchStatus::Stopped(StopReason::Deadline));
-        // Polled every 1024 expansions: a flag raised mid-search stops at the next poll.
+        // Polled every POLL_EVERY expansions: a flag raised mid-search stops at the next poll.
         let flag = AtomicBool::new(false);
         let lim = Limits { stop: Some(&flag), ..Limits::none() };
         let o = astar(

@@ -3,7 +3,7 @@ use std::path::PathBuf;
 use clap::Args;
 use tidepath::scenario;
 use tidepath::Error;
-use tidepath_experiments::compare::{compare_scenario, RunBudget};
+use tidepath_experiments::compare::{compare_scenario, default_reference, RunBudget};
 use tidepath_experiments::output;
 use tidepath_experiments::table::markdown;
 
@@ -25,6 +25,10 @@ pub struct CompareArgs {
     /// Write results.json, runs.csv, table.md, convergence.svg, boxplot.svg and paths.svg here.
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Reference planner for the gap column (percent above its cost); `none` for no reference.
+    /// Default: `visibility` where it applies, else `theta-star`.
+    #[arg(long)]
+    pub reference: Option<String>,
     /// Also write an OMPL benchmark log (load it with `ompl_benchmark_statistics`).
     #[arg(long)]
     pub ompl_log: Option<PathBuf>,
@@ -41,7 +45,24 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     };
     let total = args.planners.len() * args.runs as usize;
     let bar = RunsBar::new("compare", total);
-    let result = compare_scenario(&scenario, &args.planners, args.runs, args.run.seed, &budget, jobs, &|n| bar.set(n));
+    let reference = match args.reference.as_deref() {
+        Some("none") => None,
+        Some(id) => {
+            tidepath::planner::registry().get(id).map_err(|e| Error::input("--reference", e.to_string()))?;
+            Some(id.to_string())
+        }
+        None => Some(default_reference(&scenario).to_string()),
+    };
+    let result = compare_scenario(
+        &scenario,
+        &args.planners,
+        args.runs,
+        args.run.seed,
+        &budget,
+        jobs,
+        reference.as_deref(),
+        &|n| bar.set(n),
+    );
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {
@@ -54,6 +75,18 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
         "{} — {} runs per planner, master seed {}, {:.1} s\n",
         scenario.name, args.runs, args.run.seed, c.total_wall_s
     );
+    match &c.reference {
+        Some(r) => println!(
+            "Reference: {} ({}), cost {}; gap % = 100 (cost - reference) / reference.\n",
+            r.planner,
+            r.status,
+            tidepath_experiments::table::num(r.cost)
+        ),
+        None if reference.is_some() => {
+            println!("Reference: {} found no feasible plan; no gap column.\n", reference.unwrap_or_default())
+        }
+        None => {}
+    }
     print!("{}", markdown(&c.rows, false));
     println!("\nMarks: Wilcoxon rank-sum against {} (two-sided, alpha 0.05): + {} significantly better, ≈ no significant difference, - significantly worse.", args.planners[0], args.planners[0]);
     if let Some(dir) = &args.out {

@@ -30,6 +30,9 @@ pub struct PlanArgs {
     /// its paths.
     #[arg(long)]
     pub init: Option<PathBuf>,
+    /// Also run this reference planner and print the plan's gap to it (cost, length, time).
+    #[arg(long)]
+    pub reference: Option<String>,
     /// Write the plan as JSON here.
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -91,6 +94,28 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     }
     outputs.commit()?;
     print_summary(&scenario, &report);
+    if let Some(id) = &args.reference {
+        let r = PlanRequest { planner: Some(id.clone()), seed: args.run.seed, init: None, ..req.clone() };
+        let r = PlanRequest { iterations: None, evaluations: None, population: None, smoother: None, ..r };
+        let reference = scenario.plan(&r, &mut |_| {}).map_err(|e| Error::input("--reference", e.to_string()))?;
+        match (reference.status.is_success(), reference.cost, report.cost) {
+            (true, Some(rc), Some(c)) => {
+                let pct = |a: Option<f64>, b: Option<f64>| match (a, b) {
+                    (Some(a), Some(b)) if b > 0.0 => format!("{:+.3}%", 100.0 * (a - b) / b),
+                    _ => "n/a".into(),
+                };
+                println!(
+                    "  reference      {} ({}): cost {rc:.6}; gap: cost {}, length {}, time {}",
+                    reference.planner,
+                    reference.status,
+                    pct(Some(c), Some(rc)),
+                    pct(report.length_m(), reference.length_m()),
+                    pct(report.travel_time_s(), reference.travel_time_s())
+                );
+            }
+            _ => println!("  reference      {} ({}): {}", reference.planner, reference.status, reference.reason),
+        }
+    }
     Ok(Outcome::Status(report.status))
 }
 

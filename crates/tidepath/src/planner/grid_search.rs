@@ -35,7 +35,8 @@ pub struct GridParams {
     pub objective: String,
     /// Horizontal cell size (m); 0 picks one so the domain's longer side has `cells` cells.
     pub cell: f64,
-    /// Cells along the domain's longer side when `cell` is 0.
+    /// Cells along the domain's longer side when `cell` is 0; 0 picks 200 in 2-D and 80 in
+    /// 3-D (where the voxels also span the depth band, and every edge is a motion check).
     pub cells: usize,
     /// Layers across the depth band (3-D).
     pub layers: usize,
@@ -43,7 +44,7 @@ pub struct GridParams {
 
 impl Default for GridParams {
     fn default() -> Self {
-        Self { objective: "auto".into(), cell: 0.0, cells: 200, layers: 16 }
+        Self { objective: "auto".into(), cell: 0.0, cells: 0, layers: 16 }
     }
 }
 
@@ -54,7 +55,11 @@ pub const PARAMS: &[Param] = &[
         help: "what the search minimises (default auto)",
     },
     Param { name: "cell", range: "m, >= 0", help: "horizontal cell size; 0: from `cells` (default 0)" },
-    Param { name: "cells", range: "integer in [4, 4096]", help: "cells along the domain's longer side (default 200)" },
+    Param {
+        name: "cells",
+        range: "0, or integer in [4, 4096]",
+        help: "cells along the domain's longer side; 0: 200 in 2-D, 80 in 3-D (default 0)",
+    },
     Param {
         name: "layers",
         range: "integer in [1, 256]",
@@ -77,8 +82,8 @@ impl GridParams {
         if !(p.cell >= 0.0 && p.cell.is_finite()) {
             return Err(Error::input(field("cell"), format!("must be finite and >= 0, got {}", p.cell)));
         }
-        if !(4..=4096).contains(&p.cells) {
-            return Err(Error::input(field("cells"), format!("must be in [4, 4096], got {}", p.cells)));
+        if p.cells != 0 && !(4..=4096).contains(&p.cells) {
+            return Err(Error::input(field("cells"), format!("must be 0 or in [4, 4096], got {}", p.cells)));
         }
         if !(1..=256).contains(&p.layers) {
             return Err(Error::input(field("layers"), format!("must be in [1, 256], got {}", p.layers)));
@@ -124,8 +129,12 @@ impl GridSearch {
         let w = problem.world;
         let m = &problem.missions[i];
         let size = w.bounds.size();
-        let cell =
-            if self.params.cell > 0.0 { self.params.cell } else { size.x.max(size.y) / self.params.cells as f64 };
+        let cells = match self.params.cells {
+            0 if w.dims == Dims::Three => 80,
+            0 => 200,
+            n => n,
+        };
+        let cell = if self.params.cell > 0.0 { self.params.cell } else { size.x.max(size.y) / cells as f64 };
         let band = (w.bounds.max.z.min(m.vehicle.z_max()) - w.bounds.min.z.max(m.vehicle.z_min())).max(1e-9);
         Raster::new(w, &m.vehicle, cell, band / self.params.layers as f64, m.start.z)
     }

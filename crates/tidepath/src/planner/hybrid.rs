@@ -5,7 +5,7 @@
 //! cost model.
 //!
 //! 1. Reference: `visibility` where it applies (2-D discs and boxes), else `theta-star` on the
-//!    world's raster (time-optimal objective in currents). A straight line if neither finds
+//!    world's raster in 2-D and `astar` in 3-D (time-optimal objective in currents). A straight line if neither finds
 //!    one (the optimizer then starts from it).
 //! 2. Waypoints: the reference, shortcut (points whose bypass is feasible and no costlier are
 //!    dropped), keeps k turns; n = clamp(2 k + 4, 6, 24) waypoints (at least k, at most 40),
@@ -35,7 +35,8 @@ use crate::termination::Termination;
 pub struct HybridParams {
     /// DE population.
     pub population: usize,
-    /// Cells along the domain's longer side for the reference search.
+    /// Cells along the domain's longer side for the reference search; 0: the grid planners'
+    /// default (200 in 2-D, 80 in 3-D).
     pub cells: usize,
     /// Iterations of the refinement when the run gives no count limit.
     pub iterations: u64,
@@ -43,7 +44,7 @@ pub struct HybridParams {
 
 impl Default for HybridParams {
     fn default() -> Self {
-        Self { population: 30, cells: 200, iterations: 300 }
+        Self { population: 30, cells: 0, iterations: 300 }
     }
 }
 
@@ -74,10 +75,10 @@ impl Hybrid {
             Error::Input { message, .. } => Error::input("planner.params.hybrid.population", message),
             other => other,
         })?;
-        if !(4..=4096).contains(&params.cells) {
+        if params.cells != 0 && !(4..=4096).contains(&params.cells) {
             return Err(Error::input(
                 "planner.params.hybrid.cells",
-                format!("must be in [4, 4096], got {}", params.cells),
+                format!("must be 0 or in [4, 4096], got {}", params.cells),
             ));
         }
         crate::termination::check_count("planner.params.hybrid.iterations", params.iterations)?;
@@ -97,8 +98,12 @@ impl Hybrid {
                 return (pts, 0);
             }
         }
-        let search =
-            GridSearch::new("theta-star", GridParams { cells: self.params.cells, ..GridParams::default() }, true);
+        // Any-angle Theta* in 2-D; in 3-D plain A* (Theta*'s line-of-sight relaxations make
+        // every voxel try long motions, ten times slower, and the refinement straightens the
+        // grid's corners anyway).
+        let any_angle = problem.world.dims == crate::world::Dims::Two;
+        let id = if any_angle { "theta-star" } else { "astar" };
+        let search = GridSearch::new(id, GridParams { cells: self.params.cells, ..GridParams::default() }, any_angle);
         let deadline = termination.wall_time.map(|d| std::time::Instant::now() + d / 2);
         let limits = tidepath_search::Limits { max_expansions: None, stop: termination.stop.as_deref(), deadline };
         match search.search(problem, i, &limits) {
@@ -188,7 +193,8 @@ impl Planner for Hybrid {
         // The reference and jittered copies (up to about one raster cell, in the encoding's
         // normalised units).
         let size = problem.world.bounds.size();
-        let jitter = 1.0 / self.params.cells as f64 * size.x.max(size.y) / size.x.min(size.y).max(1e-9);
+        let cells = if self.params.cells == 0 { 200.0 } else { self.params.cells as f64 };
+        let jitter = 1.0 / cells * size.x.max(size.y) / size.x.min(size.y).max(1e-9);
         let mut seeds = vec![base.clone()];
         for _ in 1..self.params.population {
             let x: Vec<f64> = base.iter().map(|v| v + jitter * (2.0 * rng.random::<f64>() - 1.0)).collect();

@@ -10,11 +10,10 @@ use tidepath_search::{maximin, Grid2};
 
 use super::Problem;
 use crate::geom::Vec3;
-use crate::raster::obstacle_fills;
 use crate::world::Dims;
 
 /// Cells on the longer side of the domain.
-const CELLS_LONG_SIDE: f64 = 512.0;
+const CELLS_LONG_SIDE: f64 = 256.0;
 
 /// `Some(reason)` when mission `i` of `problem` provably has no path.
 pub fn unreachable(problem: &Problem<'_>, i: usize) -> Option<String> {
@@ -38,24 +37,46 @@ pub fn unreachable(problem: &Problem<'_>, i: usize) -> Option<String> {
     let needed = safety - z_top;
     let mut depth = vec![0.0; nx * ny];
     let mut blocked = vec![false; nx * ny];
-    for j in 0..ny {
-        for ii in 0..nx {
-            let (xa, ya) = (b.min.x + ii as f64 * dx, b.min.y + j as f64 * dy);
-            let (xb, yb) = (xa + dx, ya + dy);
-            let c = ii + nx * j;
-            // Water depth at the deepest point of the cell (+inf without a seabed).
-            depth[c] = -world.terrain.min_elevation_in(xa, ya, xb, yb);
-            let corners = [
-                Vec3::new(xa, ya, z_bottom),
-                Vec3::new(xb, ya, z_bottom),
-                Vec3::new(xa, yb, z_bottom),
-                Vec3::new(xb, yb, z_bottom),
-                Vec3::new(xa, ya, z_top),
-                Vec3::new(xb, ya, z_top),
-                Vec3::new(xa, yb, z_top),
-                Vec3::new(xb, yb, z_top),
-            ];
-            blocked[c] = obstacle_fills(world, &corners, safety);
+    if !matches!(world.terrain, crate::world::Terrain::None) {
+        for j in 0..ny {
+            for ii in 0..nx {
+                let (xa, ya) = (b.min.x + ii as f64 * dx, b.min.y + j as f64 * dy);
+                // Water depth at the deepest point of the cell.
+                depth[ii + nx * j] = -world.terrain.min_elevation_in(xa, ya, xa + dx, ya + dy);
+            }
+        }
+    } else {
+        depth.fill(f64::INFINITY);
+    }
+    // Fixed obstacles block the cells they fill over the whole usable water column; only the
+    // cells under an obstacle's box are tested.
+    for o in world.obstacles.iter().filter(|o| o.velocity == Vec3::ZERO) {
+        let bb = o.shape.aabb();
+        let cells = |lo: f64, hi: f64, o: f64, d: f64, n: usize| {
+            let a = ((lo - o) / d).floor().max(0.0) as usize;
+            let z = ((hi - o) / d).floor().max(0.0) as usize;
+            (a.min(n - 1), z.min(n - 1))
+        };
+        let (i0, i1) = cells(bb.min.x - safety, bb.max.x + safety, b.min.x, dx, nx);
+        let (j0, j1) = cells(bb.min.y - safety, bb.max.y + safety, b.min.y, dy, ny);
+        for j in j0..=j1 {
+            for ii in i0..=i1 {
+                let (xa, ya) = (b.min.x + ii as f64 * dx, b.min.y + j as f64 * dy);
+                let (xb, yb) = (xa + dx, ya + dy);
+                let corners = [
+                    Vec3::new(xa, ya, z_bottom),
+                    Vec3::new(xb, ya, z_bottom),
+                    Vec3::new(xa, yb, z_bottom),
+                    Vec3::new(xb, yb, z_bottom),
+                    Vec3::new(xa, ya, z_top),
+                    Vec3::new(xb, ya, z_top),
+                    Vec3::new(xa, yb, z_top),
+                    Vec3::new(xb, yb, z_top),
+                ];
+                if corners.iter().all(|&p| o.contains(p, 0.0, safety)) {
+                    blocked[ii + nx * j] = true;
+                }
+            }
         }
     }
     let at = |p: Vec3| {

@@ -54,22 +54,6 @@ pub struct Raster {
     pub optimistic: Vec<bool>,
 }
 
-fn obstacle_blocks(world: &World, c: Vec3, half_diag: f64, safety: f64) -> bool {
-    world
-        .obstacles
-        .iter()
-        .filter(|o| o.velocity == Vec3::ZERO)
-        .any(|o| !(o.shape.distance_to_point(c) - half_diag >= safety))
-}
-
-pub(crate) fn obstacle_fills(world: &World, corners: &[Vec3], safety: f64) -> bool {
-    world
-        .obstacles
-        .iter()
-        .filter(|o| o.velocity == Vec3::ZERO)
-        .any(|o| corners.iter().all(|&p| o.contains(p, 0.0, safety)))
-}
-
 impl Raster {
     /// Rasterises `world` for `vehicle` with cells of about `cell` metres (horizontal), the
     /// 2-D plane at `plane_z`. In 3-D the layers are about `cell_z` metres thick.
@@ -125,23 +109,51 @@ impl Raster {
                 let h_min = terrain.min_elevation_in(xa, ya, xb, yb);
                 for k in 0..nz {
                     let (za, zb) = if three_d { (z0 + k as f64 * dz, z0 + (k + 1) as f64 * dz) } else { (z0, z0) };
-                    let centre = Vec3::new(0.5 * (xa + xb), 0.5 * (ya + yb), 0.5 * (za + zb));
-                    let half_diag = 0.5 * (dx * dx + dy * dy + (zb - za) * (zb - za)).sqrt();
-                    let corners = [
-                        Vec3::new(xa, ya, za),
-                        Vec3::new(xb, ya, za),
-                        Vec3::new(xa, yb, za),
-                        Vec3::new(xb, yb, za),
-                        Vec3::new(xa, ya, zb),
-                        Vec3::new(xb, ya, zb),
-                        Vec3::new(xa, yb, zb),
-                        Vec3::new(xb, yb, zb),
-                    ];
                     let idx = i + nx * (j + ny * k);
                     // Conservative: the lowest point of the voxel against the highest seabed.
-                    r.conservative[idx] = !(za - h_max >= safety) || obstacle_blocks(world, centre, half_diag, safety);
+                    r.conservative[idx] = !(za - h_max >= safety);
                     // Optimistic: even the highest point against the lowest seabed fails.
-                    r.optimistic[idx] = zb - h_min < safety || obstacle_fills(world, &corners, safety);
+                    r.optimistic[idx] = zb - h_min < safety;
+                }
+            }
+        }
+        // Fixed obstacles, each over the cells under its box grown by the safety distance.
+        for o in world.obstacles.iter().filter(|o| o.velocity == Vec3::ZERO) {
+            let bb = o.shape.aabb();
+            let span = |lo: f64, hi: f64, o: f64, d: f64, n: usize| {
+                let a = ((lo - safety - o) / d).floor().max(0.0) as usize;
+                let z = ((hi + safety - o) / d).floor().max(0.0) as usize;
+                (a.min(n - 1), z.min(n - 1))
+            };
+            let (i0, i1) = span(bb.min.x, bb.max.x, r.x0, dx, nx);
+            let (j0, j1) = span(bb.min.y, bb.max.y, r.y0, dy, ny);
+            let (k0, k1) = if three_d { span(bb.min.z, bb.max.z, z0, dz, nz) } else { (0, 0) };
+            for k in k0..=k1 {
+                for j in j0..=j1 {
+                    for i in i0..=i1 {
+                        let (xa, ya) = (r.x0 + i as f64 * dx, r.y0 + j as f64 * dy);
+                        let (xb, yb) = (xa + dx, ya + dy);
+                        let (za, zb) = if three_d { (z0 + k as f64 * dz, z0 + (k + 1) as f64 * dz) } else { (z0, z0) };
+                        let idx = i + nx * (j + ny * k);
+                        let centre = Vec3::new(0.5 * (xa + xb), 0.5 * (ya + yb), 0.5 * (za + zb));
+                        let half_diag = 0.5 * (dx * dx + dy * dy + (zb - za) * (zb - za)).sqrt();
+                        if !(o.shape.distance_to_point(centre) - half_diag >= safety) {
+                            r.conservative[idx] = true;
+                        }
+                        let corners = [
+                            Vec3::new(xa, ya, za),
+                            Vec3::new(xb, ya, za),
+                            Vec3::new(xa, yb, za),
+                            Vec3::new(xb, yb, za),
+                            Vec3::new(xa, ya, zb),
+                            Vec3::new(xb, ya, zb),
+                            Vec3::new(xa, yb, zb),
+                            Vec3::new(xb, yb, zb),
+                        ];
+                        if corners.iter().all(|&p| o.contains(p, 0.0, safety)) {
+                            r.optimistic[idx] = true;
+                        }
+                    }
                 }
             }
         }
