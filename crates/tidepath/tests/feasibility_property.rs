@@ -4,6 +4,8 @@
 //! containment tests, own clock: the crab travel model integrated piece by piece as documented,
 //! sampled densely inside every piece at the time the vehicle is there).
 
+mod common;
+
 use proptest::prelude::*;
 use tidepath::geom::{Aabb, Vec2, Vec3};
 use tidepath::mission::Mission;
@@ -81,38 +83,10 @@ fn vortex() -> impl Strategy<Value = LambOseen> {
     })
 }
 
-/// The documented crab clock, written again: pieces of at most `step` metres, each flown at
-/// c.d + sqrt(v^2 - |c - (c.d) d|^2) for the current at its midpoint when the vehicle enters
-/// it. Returns (piece start, piece end, t start, t end) for every piece, or `None` when a piece
-/// cannot be flown (the model must then call the path infeasible).
+/// The re-checker's own clock (`common/`), with the model's current step.
 fn own_clock(world: &World, a: Vec3, b: Vec3, t0: f64, v: f64, step: f64) -> Option<Vec<(Vec3, Vec3, f64, f64)>> {
-    let len = a.distance(b);
-    if len == 0.0 {
-        return Some(vec![(a, b, t0, t0)]);
-    }
-    let d = (b - a) / len;
-    let n = match world.current {
-        Current::None | Current::Uniform(_) => 1,
-        _ => (len / step).ceil().max(1.0) as usize,
-    };
-    let piece = len / n as f64;
-    let mut out = Vec::with_capacity(n);
-    let mut t = t0;
-    for k in 0..n {
-        let p0 = a + d * (piece * k as f64);
-        let p1 = if k + 1 == n { b } else { a + d * (piece * (k + 1) as f64) };
-        let c = world.current.velocity(a + d * (piece * (k as f64 + 0.5)), t);
-        let along = c.dot(d);
-        let cross = c - d * along;
-        let disc = v * v - cross.dot(cross);
-        if disc < 0.0 || along + disc.sqrt() <= 0.0 {
-            return None;
-        }
-        let t1 = t + piece / (along + disc.sqrt());
-        out.push((p0, p1, t, t1));
-        t = t1;
-    }
-    Some(out)
+    let settings = ModelSettings { current_step: step, ..ModelSettings::default() };
+    common::clock(world, &settings, v, a, b, t0)
 }
 
 fn waypoint() -> impl Strategy<Value = Vec3> {
