@@ -132,6 +132,25 @@ fn headland_default_plan_is_within_one_percent_of_visibility() {
     }
 }
 
+/// The hint is not given where forward-only routes exist: short sliced runs on `demo` and
+/// `salish` that end infeasible do not blame the encoding.
+#[test]
+fn sliced_hint_is_not_given_where_forward_routes_exist() {
+    let mut infeasible = 0;
+    for name in ["demo", "salish"] {
+        let s = Scenario::from_toml(builtin(name).unwrap(), name).unwrap();
+        for seed in 0..20 {
+            let req = PlanRequest { planner: Some("pso".into()), seed, iterations: Some(1), ..PlanRequest::default() };
+            let r = s.plan(&req, &mut |_| {}).unwrap();
+            if !r.status.is_success() {
+                infeasible += 1;
+                assert!(!r.reason.contains("sliced encoding"), "{name} seed {seed}: {}", r.reason);
+            }
+        }
+    }
+    assert!(infeasible > 0, "no infeasible run to look at");
+}
+
 /// Two basins joined only over a 1 m sill, for a vehicle needing 22 m: every planner reports
 /// `unreachable` and names the sill.
 #[test]

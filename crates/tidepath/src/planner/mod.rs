@@ -13,6 +13,7 @@ mod objective;
 mod optimizer_planner;
 pub mod reachability;
 pub mod registry;
+mod sliced_hint;
 pub mod solve;
 mod status;
 pub mod visibility;

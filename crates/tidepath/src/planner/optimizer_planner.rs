@@ -1,7 +1,6 @@
 //! Encoding + cost model + optimizer, run by the shared optimizer runner. The encoding is a
 //! setting of this kind of planner, not part of the problem.
 
-use super::grid_search::{GridParams, GridSearch};
 use super::{PathObjective, Planner, PlannerOutput, Problem, RunOptions, SearchStats};
 use crate::encoding::{self, Encoding, EncodingArgs, EncodingSpec};
 use crate::error::Result;
@@ -39,30 +38,18 @@ impl OptimizerPlanner {
 }
 
 impl OptimizerPlanner {
-    /// When a sliced encoding's best path is infeasible and the world needs a route that turns
-    /// back along the start-goal axis (a Theta* route on a coarse raster does), say so: no
-    /// amount of search fixes that encoding.
+    /// When a sliced encoding's best path is infeasible and every route here must turn back
+    /// along the start-goal axis, say so: no amount of search fixes that encoding.
     fn sliced_hint(&self, problem: &Problem<'_>, paths: &[Vec<crate::geom::Vec3>]) -> Option<super::Claim> {
         if self.encoding.kind != "sliced" {
             return None;
         }
-        let search = GridSearch::new("theta-star", GridParams { cells: 100, ..GridParams::default() }, true);
         for (i, p) in paths.iter().enumerate() {
             let model = problem.path_model(i);
             if p.len() < 2 || model.assess(p, &mut Vec::new()).feasible() {
                 continue;
             }
-            let Ok(r) = search.search(problem, i, &tidepath_search::Limits::none()) else { continue };
-            let m = &problem.missions[i];
-            let axis = (m.goal - m.start).truncate();
-            let len = axis.length();
-            if r.path.len() < 2 || len == 0.0 {
-                continue;
-            }
-            let along: Vec<f64> = r.path.iter().map(|q| (*q - m.start).truncate().dot(axis) / len).collect();
-            let back =
-                along.windows(2).any(|w| w[1] < w[0] - 1e-6 * len) || along.iter().any(|&u| u > len * (1.0 + 1e-6));
-            if back {
+            if super::sliced_hint::must_turn_back(problem, i) {
                 return Some(super::Claim::Hint(
                     "the sliced encoding cannot go back along the start-goal axis, and every route here must: use the default planner (hybrid) or [encoding] kind = \"free\"".into(),
                 ));
