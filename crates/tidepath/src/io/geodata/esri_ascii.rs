@@ -73,7 +73,7 @@ pub fn read_from(mut input: impl BufRead, what: &str, subset: Option<&GeoBox>, d
     let mut values = vec![f64::NAN; keep_col.len() * kept_rows];
     let mut row_values = Vec::with_capacity(nx);
     let mut out_row = kept_rows;
-    for r in 0..ny {
+    for (r, &keep) in keep_row.iter().enumerate() {
         let text = match (r, first_data.take()) {
             (0, Some(t)) => t,
             _ => {
@@ -84,7 +84,7 @@ pub fn read_from(mut input: impl BufRead, what: &str, subset: Option<&GeoBox>, d
                 line.clone()
             }
         };
-        if !keep_row[r] {
+        if !keep {
             continue;
         }
         row_values.clear();

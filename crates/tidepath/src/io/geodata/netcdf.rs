@@ -286,7 +286,6 @@ impl Layout {
         }
         // Longitudes into one continuous range (0..360 files, boxes across the antimeridian),
         // then columns in increasing order.
-        let mut lon = lon;
         match subset {
             Some(_) => unwrap_lon(&mut lon, subset),
             None => {
