@@ -74,7 +74,7 @@ impl GeoGrid {
             return Err(Error::input(what, format!("needs at least 2 x 2 nodes, got {} x {}", lon.len(), lat.len())));
         }
         for (name, axis) in [("longitude", &lon), ("latitude", &lat)] {
-            if let Some(k) = axis.windows(2).position(|w| !(w[1] > w[0]) || !w[0].is_finite() || !w[1].is_finite()) {
+            if let Some(k) = axis.windows(2).position(|w| w[1] <= w[0] || !w[0].is_finite() || !w[1].is_finite()) {
                 return Err(Error::input(
                     what,
                     format!(
@@ -125,7 +125,7 @@ impl GeoGrid {
 /// outside. Axes may be irregular (binary search).
 fn bracket(axis: &[f64], x: f64) -> Option<(usize, f64)> {
     let (first, last) = (axis[0], axis[axis.len() - 1]);
-    if !(x >= first && x <= last) {
+    if x.is_nan() || x < first || x > last {
         return None;
     }
     let k = axis.partition_point(|&a| a <= x).clamp(1, axis.len() - 1) - 1;
