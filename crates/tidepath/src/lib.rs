@@ -4,8 +4,9 @@
 //!
 //! Each module knows only the ones listed before it:
 //!
-//! * [`geom`], [`error`], [`config`], [`rng`], [`registry`]: shared basics (vectors, errors
-//!   that name the field, TOML decoding, seeded streams, the one registry-table type);
+//! * [`geom`], [`error`], [`geo`], [`config`], [`rng`], [`registry`]: shared basics (vectors,
+//!   errors that name the field, the latitude/longitude frame, TOML decoding, seeded streams,
+//!   the one registry-table type);
 //! * [`world`]: seabed, obstacles and currents, answering questions at a point and time;
 //! * [`vehicle`], [`mission`]: what the robot can do; where it goes and when it leaves;
 //! * [`validity`]: is a state valid at t, is a motion valid leaving at t (on the travel clock);
@@ -23,6 +24,7 @@ pub mod config;
 pub mod cost;
 pub mod encoding;
 pub mod error;
+pub mod geo;
 pub mod geom;
 pub mod io;
 pub mod mission;

@@ -237,7 +237,8 @@ fn case(seed: u64, corpus: &[String], dir: &std::path::Path, stats: &mut Stats) 
     if std::env::var_os("TIDEPATH_FUZZ_DUMP").is_some() {
         eprintln!("--- case {seed} scenario:\n{text}");
     }
-    let Ok(s) = Scenario::from_toml(&text, "fuzz.toml") else { return };
+    // As a built-in, so `salish`'s data file resolves to the embedded copy.
+    let Ok(s) = Scenario::from_toml(&text, "builtin:fuzz") else { return };
     stats.loaded += 1;
     let req = PlanRequest {
         // Mostly the optimizers (fast); every tenth case a graph or composite planner.

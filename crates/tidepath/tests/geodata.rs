@@ -5,10 +5,10 @@
 use std::path::PathBuf;
 
 use tidepath::io::geodata::netcdf::{read_bathymetry, Positive};
-use tidepath::io::geodata::{esri_ascii, GeoBox, GeoGrid};
+use tidepath::io::geodata::{esri_ascii, DataFile, GeoBox, GeoGrid};
 
-fn fixture(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/geo").join(name)
+fn fixture(name: &str) -> DataFile {
+    DataFile::Path(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/geo").join(name))
 }
 
 fn plane(lon: f64, lat: f64) -> f64 {
@@ -67,11 +67,12 @@ fn a_subset_box_and_decimation_read_only_the_box() {
     let b = GeoBox::new(-124.55, 48.25, -124.15, 48.75, "box").unwrap();
     for f in ["bathy_classic.nc", "bathy_64bit.nc", "bathy_cdf5.nc", "bathy_nc4.nc"] {
         let g = read_bathymetry(&fixture(f), None, None, Some(&b), 1).unwrap();
-        assert_eq!((g.nx(), g.ny()), (4, 5), "{f}: {:?} {:?}", g.lon, g.lat);
-        assert!((g.lon[0] + 124.5).abs() < 1e-6 && (g.lat[4] - 48.7).abs() < 1e-6, "{f}");
+        // The nodes inside, and one beyond each edge (for interpolation up to the edge).
+        assert_eq!((g.nx(), g.ny()), (6, 7), "{f}: {:?} {:?}", g.lon, g.lat);
+        assert!((g.lon[0] + 124.6).abs() < 1e-6 && (g.lat[6] - 48.8).abs() < 1e-6, "{f}");
         assert_plane(&g, 0.05 + 1e-9, &[]);
         let d = read_bathymetry(&fixture(f), None, None, Some(&b), 2).unwrap();
-        assert_eq!((d.nx(), d.ny()), (2, 3), "{f}");
+        assert_eq!((d.nx(), d.ny()), (3, 4), "{f}");
         assert_plane(&d, 0.05 + 1e-9, &[]);
     }
 }
@@ -80,15 +81,18 @@ fn a_subset_box_and_decimation_read_only_the_box() {
 fn a_box_across_the_antimeridian_is_continuous() {
     let b = GeoBox::new(170.0, -10.0, -170.0, 10.0, "box").unwrap();
     let g = read_bathymetry(&fixture("global_360.nc"), None, None, Some(&b), 1).unwrap();
-    assert_eq!(g.lon, (0..11).map(|k| 170.0 + 2.0 * k as f64).collect::<Vec<_>>());
-    // The value is the node's longitude in -180..180: 170 .. 178, then -180 .. -170.
+    assert_eq!(g.lon, (0..13).map(|k| 168.0 + 2.0 * k as f64).collect::<Vec<_>>());
+    // The value is the node's longitude in -180..180: 168 .. 178, then -180 .. -168.
     let row: Vec<f64> = (0..g.nx()).map(|i| g.value(i, 0)).collect();
-    assert_eq!(row, vec![170.0, 172.0, 174.0, 176.0, 178.0, -180.0, -178.0, -176.0, -174.0, -172.0, -170.0]);
+    assert_eq!(
+        row,
+        vec![168.0, 170.0, 172.0, 174.0, 176.0, 178.0, -180.0, -178.0, -176.0, -174.0, -172.0, -170.0, -168.0]
+    );
     // A box across the prime meridian in a 0..360 file.
     let b = GeoBox::new(-5.0, -10.0, 5.0, 10.0, "box").unwrap();
     let g = read_bathymetry(&fixture("global_360.nc"), None, None, Some(&b), 1).unwrap();
-    assert_eq!(g.lon, vec![-4.0, -2.0, 0.0, 2.0, 4.0]);
-    assert_eq!((0..5).map(|i| g.value(i, 0)).collect::<Vec<_>>(), vec![-4.0, -2.0, 0.0, 2.0, 4.0]);
+    assert_eq!(g.lon, vec![-6.0, -4.0, -2.0, 0.0, 2.0, 4.0, 6.0]);
+    assert_eq!((0..7).map(|i| g.value(i, 0)).collect::<Vec<_>>(), vec![-6.0, -4.0, -2.0, 0.0, 2.0, 4.0, 6.0]);
 }
 
 #[test]
@@ -111,4 +115,33 @@ fn bad_requests_name_the_problem() {
     assert!(
         e(read_bathymetry(&fixture("currents_copernicus.nc"), Some("uo"), None, None, 1)).contains("say which index")
     );
+}
+
+/// The projection's distance error against geodesic distances (WGS84, geographiclib) over a
+/// 300 km box: every pair of a 7 x 7 lattice of points, at mid and high latitude.
+#[test]
+fn geo_projection_error() {
+    use tidepath::geo::GeoFrame;
+    for (lon0, lat0) in [(-124.0, 48.5), (10.0, 70.0), (179.5, -17.0), (0.0, 0.0)] {
+        let f = GeoFrame::new(lon0, lat0, "o").unwrap();
+        // 300 km box: +-150 km about the origin, as lon/lat via the inverse projection.
+        let pts: Vec<(f64, f64)> = (0..7)
+            .flat_map(|i| (0..7).map(move |j| (-150e3 + 50e3 * i as f64, -150e3 + 50e3 * j as f64)))
+            .map(|(x, y)| f.inverse(x, y))
+            .collect();
+        let mut worst: f64 = 0.0;
+        for a in &pts {
+            for b in &pts {
+                let g = f.geodesic_distance(*a, *b);
+                if g < 1.0 {
+                    continue;
+                }
+                let (pa, pb) = (f.forward(a.0, a.1, "a").unwrap(), f.forward(b.0, b.1, "b").unwrap());
+                let e = (pa.0 - pb.0).hypot(pa.1 - pb.1);
+                worst = worst.max((e - g).abs() / g);
+            }
+        }
+        assert!(worst < 1e-3, "({lon0}, {lat0}): worst relative distance error {worst}");
+        eprintln!("({lon0}, {lat0}): worst relative distance error over a 300 km box {:.4}%", worst * 100.0);
+    }
 }

@@ -5,6 +5,7 @@
 const ORDER: &[&str] = &[
     "geom",
     "error",
+    "geo",
     "config",
     "rng",
     "registry",

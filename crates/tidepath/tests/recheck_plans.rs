@@ -7,11 +7,11 @@ mod common;
 
 use tidepath::planner::registry::BuildPlanner;
 use tidepath::planner::PLANNERS;
-use tidepath::scenario::{builtin, PlanRequest, Scenario};
+use tidepath::scenario::{PlanRequest, Scenario};
 
 fn scenarios() -> Vec<Scenario> {
     let mut out: Vec<Scenario> =
-        ["demo", "salish", "headland"].iter().map(|n| Scenario::from_toml(builtin(n).unwrap(), n).unwrap()).collect();
+        ["demo", "salish", "headland"].iter().map(|n| tidepath::scenario::load(n).unwrap()).collect();
     out.push(Scenario::from_toml(include_str!("data/moving_jet.toml"), "moving_jet.toml").unwrap());
     out.push(Scenario::from_toml(include_str!("data/tidal_grid.toml"), "tidal_grid.toml").unwrap());
     out
@@ -68,7 +68,7 @@ fn no_disagreement_over_a_thousand_plans_from_every_planner() {
 /// infeasible or truly clear of it.
 #[test]
 fn ga_seed_26_smoothed_plan_is_clear_of_the_moving_sphere_or_infeasible() {
-    let s = Scenario::from_toml(builtin("demo").unwrap(), "demo").unwrap();
+    let s = tidepath::scenario::load("demo").unwrap();
     let req = PlanRequest {
         planner: Some("ga".into()),
         seed: 26,

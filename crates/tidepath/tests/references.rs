@@ -111,7 +111,7 @@ fn shear_current_default_plan_is_within_one_percent_of_the_zermelo_optimum() {
 /// length; the sliced planners fail, and say why.
 #[test]
 fn headland_default_plan_is_within_one_percent_of_visibility() {
-    let s = Scenario::from_toml(builtin("headland").unwrap(), "headland").unwrap();
+    let s = tidepath::scenario::load("headland").unwrap();
     let vis =
         s.plan(&PlanRequest { planner: Some("visibility".into()), ..PlanRequest::default() }, &mut |_| {}).unwrap();
     assert!(vis.status.is_success(), "{}", vis.reason);
@@ -138,7 +138,7 @@ fn headland_default_plan_is_within_one_percent_of_visibility() {
 fn sliced_hint_is_not_given_where_forward_routes_exist() {
     let mut infeasible = 0;
     for name in ["demo", "salish"] {
-        let s = Scenario::from_toml(builtin(name).unwrap(), name).unwrap();
+        let s = tidepath::scenario::load(name).unwrap();
         for seed in 0..20 {
             let req = PlanRequest { planner: Some("pso".into()), seed, iterations: Some(1), ..PlanRequest::default() };
             let r = s.plan(&req, &mut |_| {}).unwrap();
@@ -276,11 +276,11 @@ fn reachability_never_denies_a_path_the_conservative_search_finds() {
 fn cape_flattery_route_is_reliable_with_the_default_planner() {
     let text = builtin("salish")
         .unwrap()
-        .replace("start = [23070.4, 50412.9, 0.0]", "start = [10000.0, 20000.0, 0.0]")
-        .replace("goal = [125423.0, 42633.7, 0.0]", "goal = [60000.0, 45000.0, 0.0]")
+        .replace("start = [-124.67, 48.47, 0.0]", "start = [-124.8475, 48.1964, 0.0]")
+        .replace("goal = [-123.28, 48.40, 0.0]", "goal = [-124.1684, 48.4213, 0.0]")
         .replace("id = \"de\"", "id = \"hybrid\"")
         + "\n[planner.params.theta-star]\ncells = 68\nobjective = \"length\"\n";
-    let s = Scenario::from_toml(&text, "flattery").unwrap();
+    let s = Scenario::from_toml(&text, "builtin:flattery").unwrap();
     let theta =
         s.plan(&PlanRequest { planner: Some("theta-star".into()), ..PlanRequest::default() }, &mut |_| {}).unwrap();
     let reference = theta.length_m().unwrap();

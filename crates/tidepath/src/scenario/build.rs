@@ -42,6 +42,10 @@ pub struct Scenario {
     pub spec: ScenarioSpec,
     /// Settings that were accepted but have no effect, to show the user.
     pub warnings: Vec<String>,
+    /// The latitude/longitude frame of a geographic scenario (`None` in a local one).
+    pub frame: Option<crate::geo::GeoFrame>,
+    /// The UTC instant of the scenario clock's zero, when the scenario gives one.
+    pub epoch: Option<chrono::DateTime<chrono::Utc>>,
 }
 
 impl Scenario {
@@ -51,10 +55,12 @@ impl Scenario {
     }
 
     pub fn from_spec(spec: ScenarioSpec, source: &str) -> Result<Self> {
-        let world = build_world(&spec.world)?;
+        let local = super::geographic::localise(&spec, source)?;
+        let world = build_world(&local.spec.world)?;
         let vehicle = build_vehicle(&spec.vehicle, "vehicle")?;
         let mut warnings = legacy_warnings(&spec.vehicle, "vehicle");
-        let missions = build_missions(&spec, &vehicle, &world, &mut warnings)?;
+        warnings.extend(local.warnings);
+        let missions = build_missions(&local.spec, &vehicle, &world, &mut warnings)?;
         let settings = build_settings(&spec.model, &world)?;
         let first = missions[0].clone();
         let scenario = Self {
@@ -71,6 +77,8 @@ impl Scenario {
             cost: spec.cost.clone(),
             encoding: spec.encoding.clone(),
             planner: spec.planner.clone(),
+            frame: local.frame,
+            epoch: local.epoch,
             spec,
             warnings,
         };
@@ -276,6 +284,10 @@ fn build_terrain(spec: &TerrainSpec) -> Result<Terrain> {
         TerrainSpec::Grid { origin, spacing, shape, elevations } => {
             let grid = grid2("world.terrain", *origin, *spacing, *shape)?;
             Terrain::Grid(ElevationGrid::new(grid, elevations.clone(), "world.terrain")?)
+        }
+        // Geographic scenarios turn files into grids before the world is built.
+        TerrainSpec::File { .. } => {
+            return Err(Error::input("world.terrain.kind", "\"file\" needs world.frame = \"geographic\""))
         }
     })
 }

@@ -52,7 +52,8 @@ mod tests {
     #[test]
     fn every_builtin_scenario_loads_and_plans() {
         for e in BUILTIN {
-            let s = Scenario::from_toml(e.build, e.id).unwrap_or_else(|err| panic!("{}: {err}", e.id));
+            let s = Scenario::from_toml(e.build, &format!("builtin:{}", e.id))
+                .unwrap_or_else(|err| panic!("{}: {err}", e.id));
             assert!(s.warnings.is_empty(), "{}: {:?}", e.id, s.warnings);
             let req = PlanRequest { iterations: Some(3), ..PlanRequest::default() };
             let r = s.plan(&req, &mut |_| {}).unwrap_or_else(|err| panic!("{}: {err}", e.id));

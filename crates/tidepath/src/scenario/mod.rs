@@ -6,6 +6,7 @@
 
 mod build;
 mod builtin;
+pub mod geographic;
 mod jet;
 mod plan;
 pub mod spec;

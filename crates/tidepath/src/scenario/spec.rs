@@ -43,6 +43,15 @@ pub struct WorldSpec {
     /// 2 (horizontal plane) or 3.
     #[serde(default = "three")]
     pub dimensions: u8,
+    /// `local` (metres, the default) or `geographic`: bounds, positions of missions and
+    /// obstacles as [longitude, latitude, z] in degrees and metres, projected when loaded
+    /// (`crate::geo`).
+    #[serde(default)]
+    pub frame: FrameKind,
+    /// The UTC instant of the scenario clock's zero (ISO 8601), for ISO departures and
+    /// forecast files; defaults to the earliest ISO departure.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub epoch: Option<String>,
     pub bounds: BoundsSpec,
     #[serde(default)]
     pub terrain: TerrainSpec,
@@ -50,6 +59,14 @@ pub struct WorldSpec {
     pub obstacles: Vec<ObstacleSpec>,
     #[serde(default)]
     pub current: CurrentSpec,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FrameKind {
+    #[default]
+    Local,
+    Geographic,
 }
 
 fn three() -> u8 {
@@ -78,6 +95,24 @@ pub enum TerrainSpec {
     },
     /// Node elevations on a regular grid, row-major by y then x.
     Grid { origin: P2, spacing: P2, shape: [usize; 2], elevations: Vec<f64> },
+    /// A bathymetry file on longitude/latitude (NetCDF or ESRI ASCII grid), for geographic
+    /// scenarios: read inside the box, resampled onto a metric grid.
+    File {
+        /// Relative to the scenario file's folder.
+        path: String,
+        /// The elevation or depth variable (NetCDF); found by name and standard name if absent.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        variable: Option<String>,
+        /// `up` (elevation) or `down` (depth); from the variable's attributes if absent.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        positive: Option<String>,
+        /// Keep every n-th node of the file.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        decimate: Option<usize>,
+        /// Spacing (m) of the metric grid; defaults to the file's own.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        resolution: Option<f64>,
+    },
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -243,6 +278,9 @@ pub struct MissionSpec {
     pub goal: P3,
     #[serde(default)]
     pub departure_time: f64,
+    /// Departure as an ISO 8601 UTC instant (instead of `departure_time` seconds).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub departure: Option<String>,
 }
 
 /// One vehicle of a fleet: its own mission and, optionally, its own vehicle limits (else the
@@ -255,6 +293,8 @@ pub struct FleetMissionSpec {
     pub goal: P3,
     #[serde(default)]
     pub departure_time: f64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub departure: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub vehicle: Option<VehicleSpec>,
 }

@@ -6,9 +6,8 @@
 //! not the file (the text is still read once, line by line).
 
 use std::io::BufRead;
-use std::path::Path;
 
-use super::{GeoBox, GeoGrid};
+use super::{DataFile, GeoBox, GeoGrid};
 use crate::error::{Error, Result};
 
 /// Most values a grid may have (rows x columns): 2^31, far beyond any ASCII grid one would
@@ -17,9 +16,14 @@ pub const MAX_VALUES: u64 = 1 << 31;
 
 /// Reads `path`, keeping the nodes inside `subset` (all when `None`) and every `decimate`-th
 /// row and column.
-pub fn read(path: &Path, subset: Option<&GeoBox>, decimate: usize) -> Result<GeoGrid> {
-    let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
-    read_from(std::io::BufReader::new(file), &path.display().to_string(), subset, decimate)
+pub fn read(file: &DataFile, subset: Option<&GeoBox>, decimate: usize) -> Result<GeoGrid> {
+    match file {
+        DataFile::Path(path) => {
+            let f = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
+            read_from(std::io::BufReader::new(f), &file.display(), subset, decimate)
+        }
+        DataFile::Embedded { bytes, .. } => read_from(*bytes, &file.display(), subset, decimate),
+    }
 }
 
 /// [`read`] from any reader; `what` names the source in errors.
@@ -184,12 +188,14 @@ pub(crate) fn inside_lon(subset: Option<&GeoBox>, lon: f64) -> bool {
     d <= b.width() + 1e-9
 }
 
-/// Shifts longitudes by multiples of 360 so they lie in [west, west + 360) of the box (or are
-/// left as they are without a box).
+/// Shifts longitudes by multiples of 360 so they lie within 180 degrees of the box's centre
+/// (or leaves them as they are without a box): continuous across the antimeridian, and nodes
+/// just beyond the box's edges stay next to it.
 pub(crate) fn unwrap_lon(lon: &mut [f64], subset: Option<&GeoBox>) {
     if let Some(b) = subset {
+        let c = b.west + b.width() / 2.0;
         for x in lon.iter_mut() {
-            *x = b.west + (*x - b.west).rem_euclid(360.0);
+            *x = c - 180.0 + (*x - (c - 180.0)).rem_euclid(360.0);
         }
     }
 }

@@ -6,7 +6,60 @@
 pub mod esri_ascii;
 pub mod netcdf;
 
+use std::path::{Path, PathBuf};
+
 use crate::error::{Error, Result};
+
+/// Where a data file's bytes come from: a path, or data built into the binary (the built-in
+/// scenarios' seabeds, so they work from any directory).
+#[derive(Clone, Debug)]
+pub enum DataFile {
+    Path(PathBuf),
+    Embedded { name: &'static str, bytes: &'static [u8] },
+}
+
+impl DataFile {
+    /// The name shown in messages.
+    pub fn display(&self) -> String {
+        match self {
+            DataFile::Path(p) => p.display().to_string(),
+            DataFile::Embedded { name, .. } => format!("builtin:{name}"),
+        }
+    }
+
+    /// The file name's extension, lower case.
+    pub fn extension(&self) -> String {
+        let name = match self {
+            DataFile::Path(p) => p.as_path(),
+            DataFile::Embedded { name, .. } => Path::new(name),
+        };
+        name.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase()
+    }
+}
+
+/// Data files built into the binary, by the name scenarios use for them.
+pub const EMBEDDED: &[(&str, &[u8])] = &[("salish_topobathy.nc", include_bytes!("../../../data/salish_topobathy.nc"))];
+
+/// The file formats bathymetry can come in, by extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    NetCdf,
+    EsriAscii,
+}
+
+impl Format {
+    /// The format of `file` by its extension; `field` names the input in errors.
+    pub fn of(file: &DataFile, field: &str) -> Result<Self> {
+        match file.extension().as_str() {
+            "nc" | "nc4" | "cdf" | "netcdf" | "grd" => Ok(Format::NetCdf),
+            "asc" => Ok(Format::EsriAscii),
+            other => Err(Error::input(
+                field,
+                format!("`{}`: unknown data format `.{other}` (known: .nc .nc4 .cdf .grd for NetCDF, .asc for ESRI ASCII grid)", file.display()),
+            )),
+        }
+    }
+}
 
 /// A longitude/latitude box in degrees. `west > east` means the box crosses the antimeridian
 /// (e.g. west 179, east -179 is a 2-degree box).

@@ -8,14 +8,13 @@
 //!   (no data becomes `NaN`), and so are values beyond 1e30 (NetCDF's default fill values,
 //!   which files written without `_FillValue` contain where nothing was written);
 //! * longitudes in 0..360 or -180..180, latitudes ascending or descending, and a requested box
-//!   crossing the antimeridian: only the needed index runs are read (one hyperslab per run).
-
-use std::path::Path;
+//!   crossing the antimeridian: only the needed index runs are read (one hyperslab per run),
+//!   with one node beyond each edge of the box so every point inside can be interpolated.
 
 use netcdf_reader::{NcFile, NcSliceInfo, NcSliceInfoElem, NcVariable};
 
 use super::esri_ascii::{inside_lon, reorder_by_lon, unwrap_lon};
-use super::{GeoBox, GeoGrid};
+use super::{DataFile, GeoBox, GeoGrid};
 use crate::error::{Error, Result};
 
 /// Values beyond this magnitude are no data (NetCDF's default fills are about 9.97e36).
@@ -51,25 +50,31 @@ pub enum Positive {
 }
 
 /// Opens a NetCDF file; errors name the path.
-pub fn open(path: &Path) -> Result<NcFile> {
-    if let Err(e) = std::fs::metadata(path) {
-        return Err(Error::io(path, e));
-    }
-    NcFile::open(path).map_err(|e| Error::input(path.display().to_string(), format!("not a readable NetCDF file: {e}")))
+pub fn open(file: &DataFile) -> Result<NcFile> {
+    let opened = match file {
+        DataFile::Path(path) => {
+            if let Err(e) = std::fs::metadata(path) {
+                return Err(Error::io(path, e));
+            }
+            NcFile::open(path)
+        }
+        DataFile::Embedded { bytes, .. } => NcFile::from_bytes(bytes),
+    };
+    opened.map_err(|e| Error::input(file.display(), format!("not a readable NetCDF file: {e}")))
 }
 
 /// Reads a bathymetry grid as elevation (up positive): the variable named `variable` or the
 /// one found by name and standard name, inside `subset`, every `decimate`-th node. `positive`
 /// overrides the sign convention found from the variable's attributes.
 pub fn read_bathymetry(
-    path: &Path,
+    file: &DataFile,
     variable: Option<&str>,
     positive: Option<Positive>,
     subset: Option<&GeoBox>,
     decimate: usize,
 ) -> Result<GeoGrid> {
-    let what = path.display().to_string();
-    let file = open(path)?;
+    let what = file.display();
+    let file = open(file)?;
     let var = match variable {
         Some(name) => file.variable(name).map_err(|_| {
             Error::input(format!("{what}: variable"), format!("`{name}` not found; variables: {}", names(&file)))
@@ -209,8 +214,19 @@ impl Layout {
         let kept_y: Vec<usize> = (0..self.lat.len())
             .filter(|&j| subset.is_none_or(|b| (b.south..=b.north).contains(&self.lat[j])))
             .collect();
-        let runs = runs_of(&kept_x);
+        // One more node beyond each edge, so every point of the box lies between nodes that
+        // were read (interpolation needs the bracketing nodes).
+        let (nlon, nlat) = (self.lon.len(), self.lat.len());
+        let mut runs: Vec<(usize, usize)> = Vec::new();
+        for (a, b) in runs_of(&kept_x) {
+            let r = if subset.is_some() { (a.saturating_sub(1), (b + 1).min(nlon - 1)) } else { (a, b) };
+            match runs.last_mut() {
+                Some(last) if r.0 <= last.1 + 1 => last.1 = last.1.max(r.1),
+                _ => runs.push(r),
+            }
+        }
         let (y0, y1) = match (kept_y.first(), kept_y.last()) {
+            (Some(&a), Some(&b)) if subset.is_some() => (a.saturating_sub(1), (b + 1).min(nlat - 1)),
             (Some(&a), Some(&b)) => (a, b),
             _ => return Err(Error::input(what, "no latitude of the file lies inside the requested box")),
         };

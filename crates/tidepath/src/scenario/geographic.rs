@@ -1,0 +1,304 @@
+//! Geographic scenarios: a spec written in longitude/latitude is rewritten into the local
+//! metric frame before the world is built, so everything after loading works in metres.
+//!
+//! * The frame is the azimuthal equidistant projection about the centre of the `bounds` box
+//!   (`crate::geo`); the metric domain is the smallest rectangle holding the projected box
+//!   (its edges sampled densely), so it reaches slightly beyond the box's curved edges.
+//! * Mission starts and goals and obstacle centres are projected; an obstacle box's corners
+//!   are projected and the box holding them is used (a conservative approximation).
+//! * A bathymetry file is read inside the longitude/latitude box that covers the metric
+//!   domain, then resampled (bilinear) onto a metric grid at the file's own resolution unless
+//!   `resolution` says otherwise. Nodes without data (fill values, outside the file) are taken
+//!   as land, [`NO_DATA_ELEVATION`], and counted in a warning.
+//! * Other positions (peaks, vortices, current grids, jet regions) stay metres in the local
+//!   frame, whose origin is the box centre.
+
+use std::path::{Path, PathBuf};
+
+use chrono::{DateTime, Utc};
+
+use super::spec::*;
+use crate::error::{Error, Result};
+use crate::geo::GeoFrame;
+use crate::io::geodata::netcdf::{read_bathymetry, Positive};
+use crate::io::geodata::{esri_ascii, DataFile, Format, GeoBox, GeoGrid, EMBEDDED};
+
+/// Elevation (m) given to nodes without data: land, above the sea surface.
+pub const NO_DATA_ELEVATION: f64 = 10.0;
+
+/// Most nodes of a resampled metric grid: 4 million (a 2000 x 2000 grid). A finer request is
+/// coarsened to fit, with a warning.
+pub const MAX_GRID_NODES: usize = 4_000_000;
+
+/// A spec in metres, with the frame and clock it came from.
+pub(crate) struct Localised {
+    pub spec: ScenarioSpec,
+    pub frame: Option<GeoFrame>,
+    pub epoch: Option<DateTime<Utc>>,
+    pub warnings: Vec<String>,
+}
+
+/// Rewrites `spec` into metres when its frame is geographic, resolves ISO departures against
+/// the epoch; `source` is the scenario's file path or `builtin:NAME` (for data file paths).
+pub(crate) fn localise(spec: &ScenarioSpec, source: &str) -> Result<Localised> {
+    let mut out = spec.clone();
+    let mut warnings = Vec::new();
+    let epoch = resolve_clock(&mut out)?;
+    let frame = match spec.world.frame {
+        FrameKind::Local => {
+            if matches!(spec.world.terrain, TerrainSpec::File { .. }) {
+                return Err(Error::input(
+                    "world.terrain.kind",
+                    "\"file\" reads longitude/latitude data: set world.frame = \"geographic\"",
+                ));
+            }
+            None
+        }
+        FrameKind::Geographic => Some(project(&mut out, source, &mut warnings)?),
+    };
+    Ok(Localised { spec: out, frame, epoch, warnings })
+}
+
+fn parse_instant(field: &str, text: &str) -> Result<DateTime<Utc>> {
+    let t = text.trim();
+    DateTime::parse_from_rfc3339(t)
+        .map(|d| d.with_timezone(&Utc))
+        .or_else(|_| {
+            // Also a date alone, or a time without a zone, taken as UTC.
+            chrono::NaiveDateTime::parse_from_str(t, "%Y-%m-%dT%H:%M:%S")
+                .or_else(|_| chrono::NaiveDate::parse_from_str(t, "%Y-%m-%d").map(|d| d.and_hms_opt(0, 0, 0).unwrap()))
+                .map(|n| n.and_utc())
+        })
+        .map_err(|_| {
+            Error::input(field, format!("`{text}` is not an ISO 8601 UTC instant (e.g. 2025-11-12T06:00:00Z)"))
+        })
+}
+
+/// The scenario clock: `world.epoch`, or the earliest ISO departure; ISO departures become
+/// seconds after it.
+fn resolve_clock(spec: &mut ScenarioSpec) -> Result<Option<DateTime<Utc>>> {
+    let mut isos: Vec<(String, DateTime<Utc>)> = Vec::new();
+    if let Some(m) = &spec.mission {
+        if let Some(d) = &m.departure {
+            isos.push(("mission.departure".into(), parse_instant("mission.departure", d)?));
+        }
+    }
+    for (i, m) in spec.missions.iter().enumerate() {
+        if let Some(d) = &m.departure {
+            let f = format!("missions[{i}].departure");
+            isos.push((f.clone(), parse_instant(&f, d)?));
+        }
+    }
+    let epoch = match &spec.world.epoch {
+        Some(e) => Some(parse_instant("world.epoch", e)?),
+        None => isos.iter().map(|(_, t)| *t).min(),
+    };
+    let seconds = |t: &DateTime<Utc>| (*t - epoch.unwrap()).num_milliseconds() as f64 / 1e3;
+    if let Some(m) = &mut spec.mission {
+        if m.departure.is_some() {
+            if m.departure_time != 0.0 {
+                return Err(Error::input("mission.departure", "give departure or departure_time, not both"));
+            }
+            m.departure_time = seconds(&isos.remove(0).1);
+        }
+    }
+    for (i, m) in spec.missions.iter_mut().enumerate() {
+        if m.departure.is_some() {
+            if m.departure_time != 0.0 {
+                return Err(Error::input(
+                    format!("missions[{i}].departure"),
+                    "give departure or departure_time, not both",
+                ));
+            }
+            m.departure_time = seconds(&isos.remove(0).1);
+        }
+    }
+    Ok(epoch)
+}
+
+/// Projects every geographic position of `spec` and loads its bathymetry file.
+fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) -> Result<GeoFrame> {
+    let [w, s, z0] = spec.world.bounds.min;
+    let [e, n, z1] = spec.world.bounds.max;
+    let geo_box = GeoBox::new(w, s, e, n, "world.bounds")?;
+    let lon0 = crate::geo::normalise_lon(w + geo_box.width() / 2.0);
+    let frame = GeoFrame::new(lon0, (s + n) / 2.0, "world.bounds")?;
+    // The metric rectangle holding the projected box.
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    const EDGE_SAMPLES: usize = 64;
+    for k in 0..=EDGE_SAMPLES {
+        let f = k as f64 / EDGE_SAMPLES as f64;
+        let lon = w + f * geo_box.width();
+        let lat = s + f * (n - s);
+        for (x, y) in [(lon, s), (lon, n), (w, lat), (geo_box.east_unwrapped(), lat)] {
+            let (px, py) = frame.forward(x, y, "world.bounds")?;
+            lo = [lo[0].min(px), lo[1].min(py)];
+            hi = [hi[0].max(px), hi[1].max(py)];
+        }
+    }
+    spec.world.bounds.min = [lo[0], lo[1], z0];
+    spec.world.bounds.max = [hi[0], hi[1], z1];
+    let point = |p: &mut P3, field: &str| -> Result<()> {
+        let (x, y) = frame.forward(p[0], p[1], field)?;
+        *p = [x, y, p[2]];
+        Ok(())
+    };
+    if let Some(m) = &mut spec.mission {
+        point(&mut m.start, "mission.start")?;
+        point(&mut m.goal, "mission.goal")?;
+    }
+    for (i, m) in spec.missions.iter_mut().enumerate() {
+        point(&mut m.start, &format!("missions[{i}].start"))?;
+        point(&mut m.goal, &format!("missions[{i}].goal"))?;
+    }
+    for (i, o) in spec.world.obstacles.iter_mut().enumerate() {
+        if let Some(c) = &mut o.center {
+            if c.len() >= 2 {
+                let (x, y) = frame.forward(c[0], c[1], &format!("world.obstacles[{i}].center"))?;
+                c[0] = x;
+                c[1] = y;
+            }
+        }
+        if let (Some(a), Some(b)) = (&mut o.min, &mut o.max) {
+            let field = format!("world.obstacles[{i}]");
+            let corners = [(a[0], a[1]), (a[0], b[1]), (b[0], a[1]), (b[0], b[1])];
+            let mut xs = Vec::new();
+            for (lon, lat) in corners {
+                xs.push(frame.forward(lon, lat, &field)?);
+            }
+            a[0] = xs.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+            a[1] = xs.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+            b[0] = xs.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+            b[1] = xs.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+        }
+    }
+    if let TerrainSpec::File { path, variable, positive, decimate, resolution } = &spec.world.terrain {
+        let file = data_file(path, source)?;
+        let positive = match positive.as_deref() {
+            None => None,
+            Some("up") => Some(Positive::Up),
+            Some("down") => Some(Positive::Down),
+            Some(other) => {
+                return Err(Error::input(
+                    "world.terrain.positive",
+                    format!("must be \"up\" or \"down\", got \"{other}\""),
+                ))
+            }
+        };
+        let decimate = decimate.unwrap_or(1);
+        if !(1..=10_000).contains(&decimate) {
+            return Err(Error::input("world.terrain.decimate", format!("must be from 1 to 10000, got {decimate}")));
+        }
+        let subset = cover(&frame, lo, hi)?;
+        let grid = match Format::of(&file, "world.terrain.path")? {
+            Format::NetCdf => read_bathymetry(&file, variable.as_deref(), positive, Some(&subset), decimate)?,
+            Format::EsriAscii => esri_ascii::read(&file, Some(&subset), decimate)?,
+        };
+        spec.world.terrain = resample(&grid, &frame, lo, hi, *resolution, warnings)?;
+    }
+    Ok(frame)
+}
+
+/// The longitude/latitude box holding the metric rectangle `lo`..`hi`, with a margin of 1%.
+fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
+    let (mut west, mut east, mut south, mut north) =
+        (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    const SAMPLES: usize = 64;
+    for k in 0..=SAMPLES {
+        let f = k as f64 / SAMPLES as f64;
+        let x = lo[0] + f * (hi[0] - lo[0]);
+        let y = lo[1] + f * (hi[1] - lo[1]);
+        for (px, py) in [(x, lo[1]), (x, hi[1]), (lo[0], y), (hi[0], y)] {
+            let (lon, lat) = frame.inverse(px, py);
+            // Longitudes relative to the origin, so a box across the antimeridian stays whole.
+            let lon = frame.lon0 + crate::geo::normalise_lon(lon - frame.lon0);
+            west = west.min(lon);
+            east = east.max(lon);
+            south = south.min(lat);
+            north = north.max(lat);
+        }
+    }
+    let (mx, my) = (0.01 * (east - west) + 1e-6, 0.01 * (north - south) + 1e-6);
+    GeoBox::new(
+        crate::geo::normalise_lon(west - mx),
+        (south - my).max(-90.0),
+        crate::geo::normalise_lon(east + mx),
+        (north + my).min(90.0),
+        "world.bounds",
+    )
+}
+
+/// `path` relative to the scenario's folder, or a built-in data file for built-in scenarios.
+fn data_file(path: &str, source: &str) -> Result<DataFile> {
+    if let Some(_name) = source.strip_prefix("builtin:") {
+        return EMBEDDED
+            .iter()
+            .find(|(n, _)| *n == path)
+            .map(|(name, bytes)| DataFile::Embedded { name, bytes })
+            .ok_or_else(|| Error::input("world.terrain.path", format!("no built-in data file `{path}`")));
+    }
+    let p = Path::new(path);
+    let full: PathBuf = if p.is_absolute() {
+        p.to_path_buf()
+    } else {
+        Path::new(source).parent().map(|d| d.join(p)).unwrap_or_else(|| p.to_path_buf())
+    };
+    Ok(DataFile::Path(full))
+}
+
+/// The geographic grid resampled onto a metric grid over `lo`..`hi`.
+fn resample(
+    g: &GeoGrid,
+    frame: &GeoFrame,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    resolution: Option<f64>,
+    warnings: &mut Vec<String>,
+) -> Result<TerrainSpec> {
+    let lat_mid = (g.lat[0] + g.lat[g.ny() - 1]) / 2.0;
+    let native = {
+        let dlon = (g.lon[g.nx() - 1] - g.lon[0]) / (g.nx() - 1) as f64;
+        let dlat = (g.lat[g.ny() - 1] - g.lat[0]) / (g.ny() - 1) as f64;
+        (dlon * 111_320.0 * lat_mid.to_radians().cos()).min(dlat * 110_540.0)
+    };
+    let mut spacing = match resolution {
+        Some(r) if r > 0.0 && r.is_finite() => r,
+        Some(r) => return Err(Error::input("world.terrain.resolution", format!("must be positive, got {r}"))),
+        None => native,
+    };
+    let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
+    let nodes = |sp: f64| ((w / sp).ceil() as usize + 1, (h / sp).ceil() as usize + 1);
+    let (mut nx, mut ny) = nodes(spacing);
+    if (nx as f64) * (ny as f64) > MAX_GRID_NODES as f64 {
+        spacing *= ((nx as f64 * ny as f64) / MAX_GRID_NODES as f64).sqrt() * 1.01;
+        (nx, ny) = nodes(spacing);
+        warnings.push(format!(
+            "world.terrain: resampled at {spacing:.0} m so the grid stays within {MAX_GRID_NODES} nodes"
+        ));
+    }
+    let (dx, dy) = (w / (nx - 1) as f64, h / (ny - 1) as f64);
+    let mut z = Vec::with_capacity(nx * ny);
+    let mut missing = 0usize;
+    let lon_first = g.lon[0];
+    for j in 0..ny {
+        for i in 0..nx {
+            let (lon, lat) = frame.inverse(lo[0] + i as f64 * dx, lo[1] + j as f64 * dy);
+            // Into the grid's longitude range (which may run past 180).
+            let lon = lon_first + (lon - lon_first).rem_euclid(360.0);
+            match g.sample(lon, lat) {
+                Some(v) if v.is_finite() => z.push(v),
+                _ => {
+                    missing += 1;
+                    z.push(NO_DATA_ELEVATION);
+                }
+            }
+        }
+    }
+    if missing > 0 {
+        warnings.push(format!(
+            "world.terrain: {missing} of {} nodes have no data in the file (fill or outside it) and are taken as land",
+            nx * ny
+        ));
+    }
+    Ok(TerrainSpec::Grid { origin: lo, spacing: [dx, dy], shape: [nx, ny], elevations: z })
+}
