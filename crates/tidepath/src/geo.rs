@@ -51,7 +51,7 @@ impl GeoFrame {
     pub fn forward(&self, lon: f64, lat: f64, field: &str) -> Result<(f64, f64)> {
         check_lon_lat(lon, lat, field)?;
         let (s, azi, _, _): (f64, f64, f64, f64) = self.geodesic.inverse(self.lat0, self.lon0, lat, lon);
-        if !(s <= MAX_RADIUS_M) {
+        if s.is_nan() || s > MAX_RADIUS_M {
             return Err(Error::input(
                 field,
                 format!(
