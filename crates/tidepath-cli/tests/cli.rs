@@ -300,3 +300,49 @@ fn fleet_plans_and_evaluations_report_every_mission() {
     let o = tidepath(&["eval", "demo", out.to_str().unwrap()], &[]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// `--out` by extension: every format from a geographic scenario; latitude/longitude formats
+/// refused (exit 2, no file) for a local one; `--from`/`--to` in degrees, checked.
+#[test]
+fn plan_exports_by_extension_and_takes_from_and_to() {
+    let dir = tempfile::tempdir().unwrap();
+    for ext in ["geojson", "csv", "kml", "gpx", "json"] {
+        let out = dir.path().join(format!("s.{ext}"));
+        let o = tidepath(
+            &["plan", "salish", "--from", "-124.6,48.45", "--to=-123.3,48.35", "--out", out.to_str().unwrap()],
+            &[],
+        );
+        assert_eq!(o.status.code(), Some(0), "{ext}: {}", String::from_utf8_lossy(&o.stderr));
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert!(text.contains("-124.6"), "{ext}: the start is not in the file");
+    }
+    let kml = dir.path().join("d.kml");
+    let o = tidepath(&["plan", "demo", "--out", kml.to_str().unwrap()], &[]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("geographic scenario"));
+    assert!(!kml.exists());
+    for (args, needle) in [
+        (vec!["plan", "salish", "--to", "-124.0"], "--to: '-124.0' is not LON,LAT[,DEPTH]"),
+        (vec!["plan", "salish", "--to", "-130,48"], "--to: mission.goal"),
+        (vec!["plan", "salish", "--out", "x.shp"], "unknown extension"),
+    ] {
+        let o = tidepath(&args, &[]);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains(needle) && err.lines().count() == 1, "{args:?}: {err}");
+    }
+    // A goal on land is invalid-goal (exit 1) and says so.
+    let o = tidepath(&["plan", "salish", "--to", "-124.0,48.9"], &[]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("on land"));
+}
+
+/// A built-in geographic scenario printed and planned from a file still finds its data.
+#[test]
+fn a_copied_geographic_scenario_finds_its_data() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("mine.toml");
+    std::fs::write(&path, String::from_utf8(tidepath(&["scenario", "salish"], &[]).stdout).unwrap()).unwrap();
+    let o = tidepath(&["plan", path.to_str().unwrap(), "--iterations", "5"], &[]);
+    assert!(o.status.code() == Some(0) || o.status.code() == Some(1), "{}", String::from_utf8_lossy(&o.stderr));
+}

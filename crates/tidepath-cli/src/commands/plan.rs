@@ -1,6 +1,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use tidepath::io::export::{export, ExportFormat, Georef};
 use tidepath::io::{check_target, Outputs, PlanFile, PlanReport};
 use tidepath::scenario::{self, PlanRequest, Scenario};
 use tidepath::Error;
@@ -33,16 +34,27 @@ pub struct PlanArgs {
     /// Also run this reference planner and print the plan's gap to it (cost, length, time).
     #[arg(long)]
     pub reference: Option<String>,
-    /// Write the plan as JSON here.
+    /// Write the plan here, in the format of the extension: .json (tidepath's plan), .geojson,
+    /// .csv, .kml, .gpx (the last three in latitude/longitude need a geographic scenario).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Replace the start: LON,LAT[,DEPTH] in a geographic scenario (depth in m, positive
+    /// down), X,Y[,Z] in metres in a local one.
+    #[arg(long, allow_hyphen_values = true)]
+    pub from: Option<String>,
+    /// Replace the goal, as --from.
+    #[arg(long, allow_hyphen_values = true)]
+    pub to: Option<String>,
     /// Write an SVG figure here: plan view, vertical profile and convergence.
     #[arg(long)]
     pub plot: Option<PathBuf>,
 }
 
 pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
-    let scenario = scenario::load(&args.scenario)?;
+    let mut scenario = scenario::load(&args.scenario)?;
+    if args.from.is_some() || args.to.is_some() {
+        scenario = scenario.with_endpoints(args.from.as_deref(), args.to.as_deref())?;
+    }
     for w in &scenario.warnings {
         eprintln!("warning: {w}");
     }
@@ -55,6 +67,10 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         if let Some(p) = path {
             check_target(flag, p)?;
         }
+    }
+    let out_format = args.out.as_deref().map(|p| ExportFormat::of(p, "--out")).transpose()?;
+    if let Some(f) = out_format {
+        f.check(scenario.frame.as_ref(), "--out")?;
     }
     if let (Some(a), Some(b)) = (&args.out, &args.plot) {
         if a == b {
@@ -86,8 +102,9 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
 
     // Both files or neither.
     let mut outputs = Outputs::new();
-    if let Some(out) = &args.out {
-        outputs.stage("--out", out, report.to_json().as_bytes())?;
+    if let (Some(out), Some(format)) = (&args.out, out_format) {
+        let geo = Georef { frame: scenario.frame.as_ref(), epoch: scenario.epoch };
+        outputs.stage("--out", out, export(&report, format, geo)?.as_bytes())?;
     }
     if let Some(plot) = &args.plot {
         outputs.stage("--plot", plot, figure(&scenario, &report)?.as_bytes())?;

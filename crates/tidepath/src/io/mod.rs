@@ -1,6 +1,7 @@
 //! Files tidepath reads and writes: the plan JSON, and safe output files (all or none, never
 //! over a symlink, FIFO or device).
 
+pub mod export;
 pub mod geodata;
 pub mod output;
 pub mod plan_json;

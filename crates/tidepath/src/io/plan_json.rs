@@ -85,6 +85,24 @@ pub struct PlanReport {
     pub default_time_cap: bool,
     /// Best cost after initialisation and after each iteration (null where still infinite).
     pub history: Vec<Option<f64>>,
+    /// For geographic scenarios: the frame the metres are in, the clock's UTC zero, and each
+    /// mission's path in longitude/latitude.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub geographic: Option<GeoReport>,
+}
+
+/// Where a geographic plan's metres and seconds are on the Earth and the calendar.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct GeoReport {
+    /// "azimuthal-equidistant-wgs84" (`tidepath::geo`).
+    pub projection: String,
+    pub origin_lon: f64,
+    pub origin_lat: f64,
+    /// ISO 8601 UTC of the scenario clock's zero, when the scenario has one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub epoch: Option<String>,
+    /// Per mission, the final path as [longitude, latitude, depth_m] (depth positive down).
+    pub paths: Vec<Vec<[f64; 3]>>,
 }
 
 fn finite(v: f64) -> Option<f64> {
@@ -144,7 +162,39 @@ impl PlanReport {
             time_limit_s: about.time_limit_s,
             default_time_cap: about.default_time_cap,
             history: s.history.iter().map(|h| finite(*h)).collect(),
+            geographic: None,
         }
+    }
+
+    /// Adds the geographic frame and the paths in longitude/latitude.
+    pub fn with_frame(
+        mut self,
+        frame: Option<&crate::geo::GeoFrame>,
+        epoch: Option<chrono::DateTime<chrono::Utc>>,
+    ) -> Self {
+        if let Some(f) = frame {
+            let paths = self
+                .missions
+                .iter()
+                .map(|m| {
+                    m.points()
+                        .iter()
+                        .map(|p| {
+                            let (lon, lat) = f.inverse(p.x, p.y);
+                            [(lon * 1e7).round() / 1e7, (lat * 1e7).round() / 1e7, -p.z + 0.0]
+                        })
+                        .collect()
+                })
+                .collect();
+            self.geographic = Some(GeoReport {
+                projection: "azimuthal-equidistant-wgs84".into(),
+                origin_lon: f.lon0,
+                origin_lat: f.lat0,
+                epoch: epoch.map(|e| e.to_rfc3339_opts(chrono::SecondsFormat::Secs, true)),
+                paths,
+            });
+        }
+        self
     }
 
     pub fn to_json(&self) -> String {

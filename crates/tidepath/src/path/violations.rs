@@ -82,12 +82,17 @@ impl PathModel<'_> {
                 match issue {
                     MotionIssue::Terrain => {
                         let c = world.segment_terrain_clearance(a, b);
-                        let at = if c < 0.0 {
-                            format!("{:.2} m below the seabed", -c)
+                        // The ground at the worst point is at least min(z) - c: above the
+                        // sea surface, the segment crosses land.
+                        let ground = a.z.min(b.z) - c;
+                        let text = if ground > 0.0 {
+                            format!("segment {i} crosses land (ground at least {ground:.1} m above the sea surface)")
+                        } else if c < 0.0 {
+                            format!("segment {i} passes {:.2} m below the seabed (safety distance {safety} m)", -c)
                         } else {
-                            format!("{c:.2} m above the seabed")
+                            format!("segment {i} passes {c:.2} m above the seabed (safety distance {safety} m)")
                         };
-                        push(ViolationKind::Terrain, i, format!("segment {i} passes {at} (safety distance {safety} m)"));
+                        push(ViolationKind::Terrain, i, text);
                     }
                     MotionIssue::Obstacle(k) => {
                         let c = obstacle_clearance(self, k, a, b, t);

@@ -487,3 +487,41 @@ fn check_endpoint(field: &str, p: Vec3, world: &World) -> Result<()> {
     }
     Ok(())
 }
+
+impl Scenario {
+    /// This scenario with its mission's start and/or goal replaced (the CLI's `--from` and
+    /// `--to`): `LON,LAT[,DEPTH]` in a geographic scenario (depth in metres, positive down),
+    /// `X,Y[,Z]` in metres in a local one; an omitted depth or z keeps the scenario's. The
+    /// result is checked like a loaded scenario, errors naming `flag`.
+    pub fn with_endpoints(&self, from: Option<&str>, to: Option<&str>) -> Result<Scenario> {
+        let mut spec = self.spec.clone();
+        let geographic = spec.world.frame == FrameKind::Geographic;
+        let Some(m) = spec.mission.as_mut() else {
+            return Err(Error::input(
+                if from.is_some() { "--from" } else { "--to" },
+                "a fleet scenario ([[missions]]) has several starts and goals: edit the file instead",
+            ));
+        };
+        for (flag, text, point) in [("--from", from, &mut m.start), ("--to", to, &mut m.goal)] {
+            let Some(text) = text else { continue };
+            let what = if geographic { "LON,LAT[,DEPTH]" } else { "X,Y[,Z]" };
+            let values: Vec<f64> = text
+                .split(',')
+                .map(|v| v.trim().parse::<f64>())
+                .collect::<std::result::Result<_, _>>()
+                .map_err(|_| Error::input(flag, format!("'{text}' is not {what} (numbers separated by commas)")))?;
+            if !(2..=3).contains(&values.len()) || values.iter().any(|v| !v.is_finite()) {
+                return Err(Error::input(flag, format!("'{text}' is not {what} (2 or 3 finite numbers)")));
+            }
+            point[0] = values[0];
+            point[1] = values[1];
+            if let Some(&third) = values.get(2) {
+                point[2] = if geographic { -third } else { third };
+            }
+        }
+        Scenario::from_spec(spec, &self.source).map_err(|e| {
+            let flag = if to.is_some() && e.to_string().starts_with("mission.goal") { "--to" } else { "--from" };
+            Error::input(flag, e.to_string())
+        })
+    }
+}

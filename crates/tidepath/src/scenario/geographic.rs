@@ -243,6 +243,13 @@ fn data_file(path: &str, source: &str) -> Result<DataFile> {
     } else {
         Path::new(source).parent().map(|d| d.join(p)).unwrap_or_else(|| p.to_path_buf())
     };
+    // A copy of a built-in scenario (`tidepath scenario salish > mine.toml`) keeps working
+    // where its data file is not next to it: the built-in copy is used.
+    if !full.exists() {
+        if let Some((name, bytes)) = EMBEDDED.iter().find(|(n, _)| *n == path) {
+            return Ok(DataFile::Embedded { name, bytes });
+        }
+    }
     Ok(DataFile::Path(full))
 }
 

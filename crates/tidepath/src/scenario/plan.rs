@@ -139,7 +139,7 @@ impl Scenario {
             time_limit_s: termination.wall_time.map(|d| d.as_secs_f64()),
             default_time_cap: limit_source == LimitSource::DefaultCap,
         };
-        Ok(PlanReport::new(&plan, about))
+        Ok(PlanReport::new(&plan, about).with_frame(self.frame.as_ref(), self.epoch))
     }
 
     /// Judges one path per mission (start and goal included).

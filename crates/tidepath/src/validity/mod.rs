@@ -190,6 +190,9 @@ impl<'a> Validator<'a> {
             }
             StateIssue::Seabed { clearance } => {
                 let seabed = p.z - clearance;
+                if seabed > 0.0 {
+                    return format!("{shown} is on land (ground at {seabed:.1} m above the sea surface)");
+                }
                 let what =
                     if clearance < 0.0 { "below the seabed" } else { "within the safety distance of the seabed" };
                 format!("{shown} is {what} (seabed at {seabed:.1} m, safety distance {} m)", veh.safety_distance)
