@@ -115,7 +115,7 @@ proptest! {
             dims: Dims::Three,
             terrain,
             obstacles: obstacles.clone(),
-            current: if vortices.is_empty() { Current::None } else { Current::Vortices(vortices) },
+            current: if vortices.is_empty() { Current::None } else { Current::Vortices(vortices) }, frame: None,
         };
         let vehicle = Vehicle {
             safety_distance: safety,
@@ -207,6 +207,7 @@ fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
             }),
             obstacles: obstacles.clone(),
             current: if vortices.is_empty() { Current::None } else { Current::Vortices(vortices) },
+            frame: None,
         };
         let vehicle = Vehicle {
             speed: 1.5,

@@ -100,8 +100,9 @@ pub fn unreachable(problem: &Problem<'_>, i: usize) -> Option<String> {
             let (ci, cj) = (bn.cell % nx, bn.cell / nx);
             let (x, y) = (b.min.x + (ci as f64 + 0.5) * dx, b.min.y + (cj as f64 + 0.5) * dy);
             Some(format!(
-                "{who}goal unreachable: the deepest water connecting start and goal is {:.1} m at ({x:.0}, {y:.0}); this vehicle needs {needed:.1} m",
-                bn.value.max(0.0)
+                "{who}goal unreachable: the deepest water connecting start and goal is {:.1} m at ({}); this vehicle needs {needed:.1} m",
+                bn.value.max(0.0),
+                world.place(x, y)
             ))
         }
         _ => None,

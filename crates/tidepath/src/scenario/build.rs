@@ -56,7 +56,8 @@ impl Scenario {
 
     pub fn from_spec(spec: ScenarioSpec, source: &str) -> Result<Self> {
         let local = super::geographic::localise(&spec, source)?;
-        let world = build_world(&local.spec.world)?;
+        let mut world = build_world(&local.spec.world)?;
+        world.frame = local.frame.clone();
         let vehicle = build_vehicle(&spec.vehicle, "vehicle")?;
         let mut warnings = legacy_warnings(&spec.vehicle, "vehicle");
         warnings.extend(local.warnings);
@@ -262,7 +263,7 @@ fn build_world(spec: &WorldSpec) -> Result<World> {
     }
     let obstacles = spec.obstacles.iter().enumerate().map(|(i, o)| build_obstacle(i, o)).collect::<Result<Vec<_>>>()?;
     let current = build_current(&spec.current, &bounds)?;
-    Ok(World { bounds, dims, terrain, obstacles, current })
+    Ok(World { bounds, dims, terrain, obstacles, current, frame: None })
 }
 
 fn grid2(field: &str, origin: P2, spacing: P2, shape: [usize; 2]) -> Result<RegularGrid2> {

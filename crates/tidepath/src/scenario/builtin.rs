@@ -22,6 +22,15 @@ pub const BUILTIN: &[Entry<&str>] = &[
         build: include_str!("../../scenarios/salish.toml"),
     },
     Entry {
+        id: "salish-strait",
+        description:
+            "3-D AUV transit from west of Cape Flattery to Haro Strait on the real seabed, at least 20 m above it",
+        citation: "elevation: matplotlib's topobathy sample (Strait of Juan de Fuca)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/salish-strait.toml"),
+    },
+    Entry {
         id: "headland",
         description: "2-D surface transit to a goal in a bay that opens away from the start: the route must turn back",
         citation: "tidepath (synthetic)",

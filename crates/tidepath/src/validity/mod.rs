@@ -175,7 +175,10 @@ impl<'a> Validator<'a> {
 
     /// One line saying why state `p` is invalid, for messages.
     pub fn describe(&self, p: Vec3, issue: StateIssue) -> String {
-        let shown = format!("[{}, {}, {}]", p.x, p.y, p.z);
+        let shown = match self.world.frame {
+            Some(_) => format!("({}, z {:.1} m)", self.world.place(p.x, p.y), p.z),
+            None => format!("[{}, {}, {}]", p.x, p.y, p.z),
+        };
         let veh = self.vehicle;
         match issue {
             StateIssue::OutsideDomain => {

@@ -36,11 +36,35 @@ pub struct World {
     pub terrain: Terrain,
     pub obstacles: Vec<Obstacle>,
     pub current: Current,
+    /// The latitude/longitude frame of a geographic world, so messages can name places in
+    /// degrees; `None` for a local one.
+    pub frame: Option<crate::geo::GeoFrame>,
 }
 
 impl World {
+    /// A horizontal position for messages: "48.3812 N, 123.2101 W" in a geographic world,
+    /// "x, y" metres otherwise.
+    pub fn place(&self, x: f64, y: f64) -> String {
+        match &self.frame {
+            Some(f) => {
+                let (lon, lat) = f.inverse(x, y);
+                let ns = if lat >= 0.0 { "N" } else { "S" };
+                let ew = if lon >= 0.0 { "E" } else { "W" };
+                format!("{:.4} {ns}, {:.4} {ew}", lat.abs(), lon.abs())
+            }
+            None => format!("{x:.0}, {y:.0}"),
+        }
+    }
+
     /// An empty 3-D box: no seabed, no obstacles, still water.
     pub fn open(bounds: Aabb) -> Self {
-        Self { bounds, dims: Dims::Three, terrain: Terrain::None, obstacles: Vec::new(), current: Current::None }
+        Self {
+            bounds,
+            dims: Dims::Three,
+            terrain: Terrain::None,
+            obstacles: Vec::new(),
+            current: Current::None,
+            frame: None,
+        }
     }
 }

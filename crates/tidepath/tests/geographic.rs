@@ -1,0 +1,53 @@
+//! Geographic scenarios end to end: the built-in `salish-strait` AUV transit is feasible and
+//! re-checked on the real seabed; a depth band below the strait's sill is reported unreachable
+//! with the sill named in degrees; boxes and positions in degrees are checked.
+
+mod common;
+
+use tidepath::planner::Status;
+use tidepath::scenario::{builtin, load, PlanRequest, Scenario};
+
+#[test]
+fn salish_strait_default_plan_is_feasible_and_stays_in_the_water() {
+    let s = load("salish-strait").unwrap();
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    for seed in 1..=3 {
+        let r = s.plan(&PlanRequest { seed, ..PlanRequest::default() }, &mut |_| {}).unwrap();
+        assert!(r.status.is_success(), "seed {seed}: {}", r.reason);
+        // Dense re-check at the vehicle's clock: 20 m above the seabed everywhere.
+        assert!(common::recheck_plan(&s, &r).unwrap() > 100);
+        let m = r.missions[0].metrics.as_ref().unwrap();
+        let c = m.min_clearance_m.unwrap();
+        assert!(c >= 20.0 - 1e-6, "{c}");
+        let geo = r.geographic.as_ref().unwrap();
+        let first = geo.paths[0][0];
+        assert!((first[0] + 125.0).abs() < 1e-6 && (first[1] - 48.3).abs() < 1e-6 && (first[2] - 40.0).abs() < 1e-6);
+    }
+}
+
+#[test]
+fn a_band_below_the_sill_is_unreachable_and_the_sill_is_named_in_degrees() {
+    let text =
+        builtin("salish-strait").unwrap().replace("depth_min = 10.0", "depth_min = 60.0").replace("-40.0]", "-65.0]");
+    let s = Scenario::from_toml(&text, "builtin:deep").unwrap();
+    let r = s.plan(&PlanRequest::default(), &mut |_| {}).unwrap();
+    assert_eq!(r.status, Status::Unreachable, "{}", r.reason);
+    assert!(r.reason.contains("76.9 m at (48.4252 N, 123.0838 W)"), "{}", r.reason);
+}
+
+#[test]
+fn geographic_inputs_are_checked() {
+    let base = builtin("salish").unwrap();
+    let e = |from: &str, to: &str| {
+        Scenario::from_toml(&base.replace(from, to), "t.toml").map(|_| ()).unwrap_err().to_string()
+    };
+    assert!(e("min = [-124.97, 48.03", "min = [-124.97, 49.5").contains("world.bounds"));
+    assert!(e("min = [-124.97", "min = [-190.0").contains("world.bounds.west"));
+    assert!(e("start = [-124.67, 48.47", "start = [-124.67, 95.0").contains("mission.start: latitude"));
+    assert!(e("start = [-124.67, 48.47", "start = [-120.0, 48.47").contains("mission.start"));
+    assert!(e("path = \"salish_topobathy.nc\"", "path = \"nowhere.nc\"").contains("nowhere.nc"));
+    assert!(e("path = \"salish_topobathy.nc\"", "path = \"x.tif\"").contains("unknown data format"));
+    assert!(e("frame = \"geographic\"\n", "").contains("set world.frame = \"geographic\""));
+    assert!(e("goal = [-123.28, 48.40, 0.0]", "goal = [-123.28, 48.40, 0.0]\ndeparture = \"noon\"")
+        .contains("mission.departure: `noon` is not an ISO 8601"));
+}
