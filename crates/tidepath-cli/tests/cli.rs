@@ -346,3 +346,20 @@ fn a_copied_geographic_scenario_finds_its_data() {
     let o = tidepath(&["plan", path.to_str().unwrap(), "--iterations", "5"], &[]);
     assert!(o.status.code() == Some(0) || o.status.code() == Some(1), "{}", String::from_utf8_lossy(&o.stderr));
 }
+
+/// The acceptance command of the real-data issue: a feasible AUV route on the real seabed, a
+/// plot with latitude/longitude axes and the coastline, a GeoJSON that parses.
+#[test]
+fn salish_strait_plot_has_degree_axes_and_the_coastline() {
+    let dir = tempfile::tempdir().unwrap();
+    let (svg, gj) = (dir.path().join("s.svg"), dir.path().join("s.geojson"));
+    let o = tidepath(&["plan", "salish-strait", "--plot", svg.to_str().unwrap(), "--out", gj.to_str().unwrap()], &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for needle in ["longitude", "latitude", "124.5°W", "48.4°N", "coastline"] {
+        assert!(text.contains(needle), "the figure lacks {needle}");
+    }
+    let g: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&gj).unwrap()).unwrap();
+    assert_eq!(g["type"], "FeatureCollection");
+    assert_eq!(g["features"][0]["properties"]["status"], "feasible");
+}

@@ -4,6 +4,7 @@
 //! distances to obstacles), so the plot size is computed here from the available area rather
 //! than left to plotters.
 
+mod graticule;
 mod overlays;
 mod seabed;
 #[cfg(test)]
@@ -12,9 +13,11 @@ mod tests;
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor;
 
 use super::style::{self, plot_err, LegendEntry, LengthUnit, Marker, Swatch};
 use super::PlotPath;
+use graticule::Graticule;
 use overlays::{draw_endpoints, draw_obstacle_motion, draw_obstacles, draw_paths, draw_quiver, Quiver};
 use seabed::{draw_colorbar_horizontal, draw_colorbar_vertical, draw_seabed, Seabed};
 use tidepath::error::{Error, Result};
@@ -23,7 +26,7 @@ use tidepath::world::World;
 
 type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
-const Y_LABEL_W: u32 = 64;
+const Y_LABEL_W: u32 = 74;
 const X_LABEL_H: u32 = 46;
 const TOP_PAD: u32 = 8;
 const RIGHT_PAD: u32 = 16;
@@ -120,31 +123,39 @@ pub fn draw_plan_view<DB: DrawingBackend>(
         if time == 0.0 { "Plan view".to_string() } else { format!("Plan view at t = {} s", style::fmt_sig(time)) };
     let body = style::caption(area, &caption)?;
     let chart_area = body.clone().shrink((left, 0), (chart_w, chart_h));
+    let (nx_labels, ny_labels) = ((plot_w / 70).clamp(2, 10) as usize, (plot_h / 45).clamp(2, 10) as usize);
+    let u = unit.metres;
+    let (rx, ry) = (x0 / u..x1 / u, y0 / u..y1 / u);
+    // Geographic worlds: ticks where meridians and parallels meet the edges, in degrees.
+    let graticule = world.frame.as_ref().map(|f| Graticule::new(f, view, nx_labels.min(7), ny_labels.min(6)));
     let mut chart = ChartBuilder::on(&chart_area)
         .margin_top(TOP_PAD)
         .margin_right(RIGHT_PAD)
         .x_label_area_size(X_LABEL_H)
         .y_label_area_size(Y_LABEL_W)
-        .build_cartesian_2d(x0 / unit.metres..x1 / unit.metres, y0 / unit.metres..y1 / unit.metres)
+        .build_cartesian_2d(rx.clone(), ry.clone())
         .map_err(plot_err)?;
-    let (nx_labels, ny_labels) = ((plot_w / 70).clamp(2, 10) as usize, (plot_h / 45).clamp(2, 10) as usize);
-    let ticks_x = style::tick_formatter(x0 / unit.metres..x1 / unit.metres, nx_labels);
-    let ticks_y = style::tick_formatter(y0 / unit.metres..y1 / unit.metres, ny_labels);
+    let ticks_x = style::tick_formatter(rx, nx_labels);
+    let ticks_y = style::tick_formatter(ry, ny_labels);
+    // Geographic worlds label their own ticks (where meridians and parallels meet the edges).
+    let geographic = graticule.is_some();
     chart
         .configure_mesh()
         .disable_mesh()
-        .x_labels(nx_labels)
-        .y_labels(ny_labels)
-        .x_desc(format!("x east ({})", unit.name))
-        .y_desc(format!("y north ({})", unit.name))
+        .x_labels(if geographic { 0 } else { nx_labels })
+        .y_labels(if geographic { 0 } else { ny_labels })
+        .x_desc(if geographic { "longitude".to_string() } else { format!("x east ({})", unit.name) })
+        .y_desc(if geographic { "latitude".to_string() } else { format!("y north ({})", unit.name) })
         .x_label_formatter(&ticks_x)
         .y_label_formatter(&ticks_y)
         .label_style(style::font(style::TICK_PX))
         .axis_desc_style(style::font(style::AXIS_DESC_PX))
         .draw()
         .map_err(plot_err)?;
+    if let Some(g) = &graticule {
+        draw_degree_ticks(&chart_area, &chart, g, view, u)?;
+    }
 
-    let u = unit.metres;
     match &seabed {
         Some(s) => draw_seabed(&chart, s, u)?,
         None => {
@@ -152,6 +163,16 @@ pub fn draw_plan_view<DB: DrawingBackend>(
                 .draw_series(std::iter::once(Rectangle::new(
                     [(x0 / u, y0 / u), (x1 / u, y1 / u)],
                     style::fill(style::NO_TERRAIN_BG),
+                )))
+                .map_err(plot_err)?;
+        }
+    }
+    if let Some(g) = &graticule {
+        for line in &g.lines {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    line.iter().map(|&(x, y)| (x / u, y / u)).collect::<Vec<_>>(),
+                    style::line(style::MUTED.mix(0.45), 1),
                 )))
                 .map_err(plot_err)?;
         }
@@ -183,6 +204,33 @@ pub fn draw_plan_view<DB: DrawingBackend>(
     }
     let legend_area = body.shrink((10, legend_top as i32), (legend_w, legend_h.max(1)));
     style::draw_legend(&legend_area, &legend)
+}
+
+/// Tick marks and degree labels on the bottom and left edges, in pixels of `area`.
+fn draw_degree_ticks<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    chart: &Chart<DB>,
+    g: &Graticule,
+    (x0, y0, _, _): (f64, f64, f64, f64),
+    u: f64,
+) -> Result<()> {
+    let base = area.get_base_pixel();
+    let font = style::font(style::TICK_PX);
+    for (x, label) in &g.x_ticks {
+        let (px, py) = chart.backend_coord(&(x / u, y0 / u));
+        let (px, py) = (px - base.0, py - base.1);
+        area.draw(&PathElement::new(vec![(px, py), (px, py + 5)], style::line(BLACK, 1))).map_err(plot_err)?;
+        let t = font.clone().pos(text_anchor::Pos::new(text_anchor::HPos::Center, text_anchor::VPos::Top));
+        area.draw(&Text::new(label.clone(), (px, py + 8), t)).map_err(plot_err)?;
+    }
+    for (y, label) in &g.y_ticks {
+        let (px, py) = chart.backend_coord(&(x0 / u, y / u));
+        let (px, py) = (px - base.0, py - base.1);
+        area.draw(&PathElement::new(vec![(px - 5, py), (px, py)], style::line(BLACK, 1))).map_err(plot_err)?;
+        let t = font.clone().pos(text_anchor::Pos::new(text_anchor::HPos::Right, text_anchor::VPos::Center));
+        area.draw(&Text::new(label.clone(), (px - 8, py), t)).map_err(plot_err)?;
+    }
+    Ok(())
 }
 
 fn legend_entries(
