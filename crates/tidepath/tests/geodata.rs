@@ -145,3 +145,35 @@ fn geo_projection_error() {
         eprintln!("({lon0}, {lat0}): worst relative distance error over a 300 km box {:.4}%", worst * 100.0);
     }
 }
+
+#[test]
+fn copernicus_currents_packed_with_cf_time_and_land() {
+    use tidepath::io::geodata::currents::read_currents;
+    let c = read_currents(&fixture("currents_copernicus.nc"), None, None, 40.0, None, 1).unwrap();
+    let iso: Vec<String> = c.times.iter().map(|t| t.to_rfc3339()).collect();
+    assert_eq!(iso, ["2025-11-12T00:00:00+00:00", "2025-11-12T06:00:00+00:00", "2025-11-12T12:00:00+00:00"]);
+    assert_eq!(c.depth, Some(50.0), "the level nearest 40 m");
+    for (k, h) in [0.0, 6.0, 12.0].iter().enumerate() {
+        let (u, v) = (&c.u[k], &c.v[k]);
+        assert!((u.value(3, 4) - (0.1 + 0.01 * h)).abs() < 5e-4, "{}", u.value(3, 4));
+        assert!((v.value(3, 4) + 0.2).abs() < 5e-4);
+        // Land (the fill value) is no data.
+        assert!(u.value(u.nx() - 1, u.ny() - 1).is_nan() && v.value(v.nx() - 1, v.ny() - 1).is_nan());
+    }
+}
+
+#[test]
+fn hycom_currents_with_missing_value_and_lon_360() {
+    use tidepath::io::geodata::currents::read_currents;
+    let b = GeoBox::new(-125.05, 47.95, -124.45, 48.55, "box").unwrap();
+    let c = read_currents(&fixture("currents_hycom.nc"), None, None, 0.0, Some(&b), 1).unwrap();
+    assert_eq!(c.times[0].to_rfc3339(), "2025-10-29T00:00:00+00:00");
+    assert_eq!(c.times[1].to_rfc3339(), "2025-10-29T10:00:00+00:00");
+    assert!((c.u[0].lon[0] + 125.0).abs() < 1e-9, "{:?}", c.u[0].lon);
+    assert!(c.u[0].value(0, 0).is_nan(), "missing_value is no data");
+    assert!((c.u[1].value(2, 2) - 0.3).abs() < 1e-9 && (c.v[1].value(2, 2) - 0.05).abs() < 1e-9);
+    let e = read_currents(&fixture("currents_hycom.nc"), Some("nope"), None, 0.0, None, 1).unwrap_err().to_string();
+    assert!(e.starts_with("world.current.u: `nope` not found"), "{e}");
+    let e = read_currents(&fixture("bathy_classic.nc"), None, None, 0.0, None, 1).unwrap_err().to_string();
+    assert!(e.contains("no velocity variable found"), "{e}");
+}

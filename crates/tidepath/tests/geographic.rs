@@ -51,3 +51,35 @@ fn geographic_inputs_are_checked() {
     assert!(e("goal = [-123.28, 48.40, 0.0]", "goal = [-123.28, 48.40, 0.0]\ndeparture = \"noon\"")
         .contains("mission.departure: `noon` is not an ISO 8601"));
 }
+
+/// `salish-forecast`: the Copernicus-style file is read end to end. The current at a sea point
+/// at whole hours is the script's tide (to the packing step and the frame's small rotation),
+/// linear between hours; the plan is feasible and re-checked on the forecast's clock.
+#[test]
+fn salish_forecast_reads_the_tide_from_netcdf() {
+    let s = load("salish-forecast").unwrap();
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    assert_eq!(s.epoch.unwrap().to_rfc3339(), "2025-11-12T03:00:00+00:00");
+    let f = s.frame.as_ref().unwrap();
+    let (x, y) = f.forward(-124.0, 48.3333, "p").unwrap();
+    let tide = |h: f64| {
+        let speed = 1.2 * (2.0 * std::f64::consts::PI / 12.42 * h).cos() - 0.1;
+        let a = 100f64.to_radians();
+        (speed * a.sin(), speed * a.cos())
+    };
+    for h in [0.0, 6.0, 9.0, 20.0] {
+        let c = s.world.current.velocity(tidepath::geom::Vec3::new(x, y, 0.0), (h - 3.0) * 3600.0);
+        let (e, n) = tide(h);
+        assert!(
+            (c.x - e).abs() < 0.01 + 0.01 * e.abs() && (c.y - n).abs() < 0.01 + 0.01 * n.abs(),
+            "hour {h}: {c:?} vs ({e}, {n})"
+        );
+    }
+    // Half past: the mean of the two hours (linear in time).
+    let c = s.world.current.velocity(tidepath::geom::Vec3::new(x, y, 0.0), 3.5 * 3600.0);
+    let (a, b) = (tide(6.0), tide(7.0));
+    assert!((c.x - (a.0 + b.0) / 2.0).abs() < 0.01, "{c:?}");
+    let r = s.plan(&PlanRequest::default(), &mut |_| {}).unwrap();
+    assert!(r.status.is_success(), "{}", r.reason);
+    common::recheck_plan(&s, &r).unwrap();
+}

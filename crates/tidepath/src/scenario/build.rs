@@ -406,6 +406,10 @@ fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
             Current::Vortices(out)
         }
         CurrentSpec::Jet(jet) => Current::Jet(super::jet::build_jet(jet, bounds)?),
+        // Geographic scenarios turn forecast files into grids before the world is built.
+        CurrentSpec::File { .. } => {
+            return Err(Error::input("world.current.kind", "\"file\" needs world.frame = \"geographic\""))
+        }
         CurrentSpec::Grid { origin, spacing, shape, times, u, v } => {
             let grid = grid2("world.current", *origin, *spacing, *shape)?;
             Current::Grid(CurrentGrid::new(grid, times.clone(), u.clone(), v.clone(), "world.current")?)

@@ -31,6 +31,16 @@ pub const BUILTIN: &[Entry<&str>] = &[
         build: include_str!("../../scenarios/salish-strait.toml"),
     },
     Entry {
+        id: "salish-forecast",
+        description:
+            "2-D surface transit up the Strait of Juan de Fuca through a tidal current forecast read from NetCDF",
+        citation:
+            "elevation: matplotlib's topobathy sample; currents: synthetic M2 tide (scripts/make_salish_forecast.py)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/salish-forecast.toml"),
+    },
+    Entry {
         id: "headland",
         description: "2-D surface transit to a goal in a bay that opens away from the start: the route must turn back",
         citation: "tidepath (synthetic)",

@@ -20,6 +20,7 @@ use chrono::{DateTime, Utc};
 use super::spec::*;
 use crate::error::{Error, Result};
 use crate::geo::GeoFrame;
+use crate::io::geodata::currents::read_currents;
 use crate::io::geodata::netcdf::{read_bathymetry, Positive};
 use crate::io::geodata::{esri_ascii, DataFile, Format, GeoBox, GeoGrid, EMBEDDED};
 
@@ -52,10 +53,20 @@ pub(crate) fn localise(spec: &ScenarioSpec, source: &str) -> Result<Localised> {
                     "\"file\" reads longitude/latitude data: set world.frame = \"geographic\"",
                 ));
             }
+            if matches!(spec.world.current, CurrentSpec::File { .. }) {
+                return Err(Error::input(
+                    "world.current.kind",
+                    "\"file\" reads longitude/latitude data: set world.frame = \"geographic\"",
+                ));
+            }
             None
         }
         FrameKind::Geographic => Some(project(&mut out, source, &mut warnings)?),
     };
+    let mut epoch = epoch;
+    if let (Some(f), CurrentSpec::File { .. }) = (&frame, &spec.world.current) {
+        epoch = Some(load_currents(&mut out, f, source, epoch, &mut warnings)?);
+    }
     Ok(Localised { spec: out, frame, epoch, warnings })
 }
 
@@ -173,7 +184,7 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
         }
     }
     if let TerrainSpec::File { path, variable, positive, decimate, resolution } = &spec.world.terrain {
-        let file = data_file(path, source)?;
+        let file = data_file(path, source, "world.terrain.path")?;
         let positive = match positive.as_deref() {
             None => None,
             Some("up") => Some(Positive::Up),
@@ -229,13 +240,13 @@ fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
 }
 
 /// `path` relative to the scenario's folder, or a built-in data file for built-in scenarios.
-fn data_file(path: &str, source: &str) -> Result<DataFile> {
+fn data_file(path: &str, source: &str, field: &str) -> Result<DataFile> {
     if let Some(_name) = source.strip_prefix("builtin:") {
         return EMBEDDED
             .iter()
             .find(|(n, _)| *n == path)
             .map(|(name, bytes)| DataFile::Embedded { name, bytes })
-            .ok_or_else(|| Error::input("world.terrain.path", format!("no built-in data file `{path}`")));
+            .ok_or_else(|| Error::input(field, format!("no built-in data file `{path}`")));
     }
     let p = Path::new(path);
     let full: PathBuf = if p.is_absolute() {
@@ -253,6 +264,21 @@ fn data_file(path: &str, source: &str) -> Result<DataFile> {
     Ok(DataFile::Path(full))
 }
 
+/// The geographic grid's values resampled onto a metric grid over `lo`..`hi`, leaving out
+/// corners without data ([`GeoGrid::sample_valid`]), `NaN` where none has data (returned as
+/// a grid spec).
+fn resample_values(
+    g: &GeoGrid,
+    frame: &GeoFrame,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    resolution: Option<f64>,
+    field: &str,
+    warnings: &mut Vec<String>,
+) -> Result<TerrainSpec> {
+    resample_with(g, frame, lo, hi, resolution, field, warnings, f64::NAN)
+}
+
 /// The geographic grid resampled onto a metric grid over `lo`..`hi`.
 fn resample(
     g: &GeoGrid,
@@ -262,6 +288,20 @@ fn resample(
     resolution: Option<f64>,
     warnings: &mut Vec<String>,
 ) -> Result<TerrainSpec> {
+    resample_with(g, frame, lo, hi, resolution, "world.terrain.resolution", warnings, NO_DATA_ELEVATION)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn resample_with(
+    g: &GeoGrid,
+    frame: &GeoFrame,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    resolution: Option<f64>,
+    field: &str,
+    warnings: &mut Vec<String>,
+    no_data: f64,
+) -> Result<TerrainSpec> {
     let lat_mid = (g.lat[0] + g.lat[g.ny() - 1]) / 2.0;
     let native = {
         let dlon = (g.lon[g.nx() - 1] - g.lon[0]) / (g.nx() - 1) as f64;
@@ -270,7 +310,7 @@ fn resample(
     };
     let mut spacing = match resolution {
         Some(r) if r > 0.0 && r.is_finite() => r,
-        Some(r) => return Err(Error::input("world.terrain.resolution", format!("must be positive, got {r}"))),
+        Some(r) => return Err(Error::input(field, format!("must be positive, got {r}"))),
         None => native,
     };
     let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
@@ -279,9 +319,7 @@ fn resample(
     if (nx as f64) * (ny as f64) > MAX_GRID_NODES as f64 {
         spacing *= ((nx as f64 * ny as f64) / MAX_GRID_NODES as f64).sqrt() * 1.01;
         (nx, ny) = nodes(spacing);
-        warnings.push(format!(
-            "world.terrain: resampled at {spacing:.0} m so the grid stays within {MAX_GRID_NODES} nodes"
-        ));
+        warnings.push(format!("{field}: resampled at {spacing:.0} m so the grid stays within {MAX_GRID_NODES} nodes"));
     }
     let (dx, dy) = (w / (nx - 1) as f64, h / (ny - 1) as f64);
     let mut z = Vec::with_capacity(nx * ny);
@@ -292,20 +330,132 @@ fn resample(
             let (lon, lat) = frame.inverse(lo[0] + i as f64 * dx, lo[1] + j as f64 * dy);
             // Into the grid's longitude range (which may run past 180).
             let lon = lon_first + (lon - lon_first).rem_euclid(360.0);
-            match g.sample(lon, lat) {
+            let value = if no_data.is_nan() { g.sample_valid(lon, lat) } else { g.sample(lon, lat) };
+            match value {
                 Some(v) if v.is_finite() => z.push(v),
                 _ => {
                     missing += 1;
-                    z.push(NO_DATA_ELEVATION);
+                    z.push(no_data);
                 }
             }
         }
     }
-    if missing > 0 {
+    if missing > 0 && !no_data.is_nan() {
         warnings.push(format!(
             "world.terrain: {missing} of {} nodes have no data in the file (fill or outside it) and are taken as land",
             nx * ny
         ));
     }
     Ok(TerrainSpec::Grid { origin: lo, spacing: [dx, dy], shape: [nx, ny], elevations: z })
+}
+
+/// Reads a current forecast file and rewrites `world.current` as a metric grid on the
+/// scenario clock: times are seconds after `epoch` (the file's first time when the scenario
+/// gives none), vectors are turned from east/north into the frame's x/y (which differ by the
+/// meridian convergence away from the origin), and nodes without data (land, fill) are still
+/// water, counted in a warning. Returns the epoch used.
+fn load_currents(
+    spec: &mut ScenarioSpec,
+    frame: &GeoFrame,
+    source: &str,
+    epoch: Option<DateTime<Utc>>,
+    warnings: &mut Vec<String>,
+) -> Result<DateTime<Utc>> {
+    let CurrentSpec::File { path, u, v, depth, resolution } = spec.world.current.clone() else { unreachable!() };
+    let file = data_file(&path, source, "world.current.path")?;
+    if Format::of(&file, "world.current.path")? != Format::NetCdf {
+        return Err(Error::input(
+            "world.current.path",
+            format!("`{path}`: current forecasts are read from NetCDF (.nc)"),
+        ));
+    }
+    let depth = depth.unwrap_or(0.0);
+    if !depth.is_finite() || !(0.0..=12_000.0).contains(&depth) {
+        return Err(Error::input("world.current.depth", format!("must be from 0 to 12000 m, got {depth}")));
+    }
+    let lo = [spec.world.bounds.min[0], spec.world.bounds.min[1]];
+    let hi = [spec.world.bounds.max[0], spec.world.bounds.max[1]];
+    let subset = cover(frame, lo, hi)?;
+    let series = read_currents(&file, u.as_deref(), v.as_deref(), depth, Some(&subset), 1)?;
+    let epoch = match (epoch, series.times.first()) {
+        (Some(e), _) => e,
+        (None, Some(t)) => *t,
+        (None, None) => return Err(Error::input("world.epoch", "the current file has no time axis: give world.epoch")),
+    };
+    let times: Vec<f64> = if series.times.is_empty() {
+        vec![0.0]
+    } else {
+        series.times.iter().map(|t| (*t - epoch).num_milliseconds() as f64 / 1e3).collect()
+    };
+    let (mut us, mut vs) = (Vec::new(), Vec::new());
+    let mut shape = [0usize; 2];
+    let mut grid_origin = lo;
+    let mut spacing = [0.0; 2];
+    let mut missing = 0usize;
+    let mut first_missing: Option<(f64, f64)> = None;
+    let water = water_test(&spec.world.terrain);
+    for (gu, gv) in series.u.iter().zip(&series.v) {
+        let (
+            TerrainSpec::Grid { origin, spacing: sp, shape: sh, elevations: eu },
+            TerrainSpec::Grid { elevations: ev, .. },
+        ) = (
+            resample_values(gu, frame, lo, hi, resolution, "world.current.resolution", warnings)?,
+            resample_values(gv, frame, lo, hi, resolution, "world.current.resolution", warnings)?,
+        )
+        else {
+            unreachable!()
+        };
+        shape = sh;
+        grid_origin = origin;
+        spacing = sp;
+        // From east/north to the frame's axes: the local direction of north on the map.
+        let mut lu = Vec::with_capacity(eu.len());
+        let mut lv = Vec::with_capacity(ev.len());
+        for (k, (&e, &n)) in eu.iter().zip(&ev).enumerate() {
+            let (x, y) = (origin[0] + (k % sh[0]) as f64 * sp[0], origin[1] + (k / sh[0]) as f64 * sp[1]);
+            if !e.is_finite() || !n.is_finite() {
+                if water(x, y) {
+                    missing += 1;
+                    first_missing.get_or_insert((x, y));
+                }
+                lu.push(0.0);
+                lv.push(0.0);
+                continue;
+            }
+            let (lon, lat) = frame.inverse(x, y);
+            let north = frame.forward(lon, (lat + 1e-3).min(90.0), "world.current").map(|(x2, y2)| (x2 - x, y2 - y));
+            let angle = north.map(|(dx, dy)| dx.atan2(dy)).unwrap_or(0.0);
+            let (s, c) = angle.sin_cos();
+            lu.push(e * c + n * s);
+            lv.push(-e * s + n * c);
+        }
+        us.push(lu);
+        vs.push(lv);
+    }
+    if let Some((x, y)) = first_missing {
+        let (lon, lat) = frame.inverse(x, y);
+        warnings.push(format!(
+            "world.current: {missing} values at water nodes (over {} time steps) have no current data and are taken as still water; the first at {:.4} {}, {:.4} {}",
+            times.len(),
+            lat.abs(),
+            if lat < 0.0 { "S" } else { "N" },
+            lon.abs(),
+            if lon < 0.0 { "W" } else { "E" }
+        ));
+    }
+    spec.world.current = CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs };
+    Ok(epoch)
+}
+
+/// Whether a metric point is water (seabed below the sea surface) in a resampled terrain grid;
+/// everything is water without terrain.
+fn water_test(terrain: &TerrainSpec) -> impl Fn(f64, f64) -> bool + '_ {
+    move |x, y| match terrain {
+        TerrainSpec::Grid { origin, spacing, shape, elevations } => {
+            let i = (((x - origin[0]) / spacing[0]).round().max(0.0) as usize).min(shape[0] - 1);
+            let j = (((y - origin[1]) / spacing[1]).round().max(0.0) as usize).min(shape[1] - 1);
+            elevations[j * shape[0] + i] < 0.0
+        }
+        _ => true,
+    }
 }

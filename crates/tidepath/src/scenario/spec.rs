@@ -177,6 +177,23 @@ pub enum CurrentSpec {
     },
     /// ijs2023's meandering jet mapped onto `region` (defaults to the domain rectangle).
     Jet(JetSpec),
+    /// A current forecast file (NetCDF: Copernicus Marine, HYCOM or any CF file), for
+    /// geographic scenarios: read inside the box at one depth level, resampled to metres.
+    File {
+        /// Relative to the scenario file's folder.
+        path: String,
+        /// Eastward and northward velocity variables; found by name and standard name if absent.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        u: Option<String>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        v: Option<String>,
+        /// Depth (m, positive down) of the level to read: the nearest one (default 0).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        depth: Option<f64>,
+        /// Spacing (m) of the metric grid; defaults to the file's own.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        resolution: Option<f64>,
+    },
     /// u, v on a regular grid at several times; bilinear in space, linear in time.
     Grid {
         origin: P2,

@@ -3,6 +3,7 @@
 //! longitude/latitude axes, read only inside the requested [`GeoBox`] where the format allows.
 //! Projection into the local metric frame is [`crate::geo`]'s job, not the readers'.
 
+pub mod currents;
 pub mod esri_ascii;
 pub mod netcdf;
 
@@ -38,7 +39,10 @@ impl DataFile {
 }
 
 /// Data files built into the binary, by the name scenarios use for them.
-pub const EMBEDDED: &[(&str, &[u8])] = &[("salish_topobathy.nc", include_bytes!("../../../data/salish_topobathy.nc"))];
+pub const EMBEDDED: &[(&str, &[u8])] = &[
+    ("salish_topobathy.nc", include_bytes!("../../../data/salish_topobathy.nc")),
+    ("salish_forecast.nc", include_bytes!("../../../data/salish_forecast.nc")),
+];
 
 /// The file formats bathymetry can come in, by extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -174,6 +178,28 @@ impl GeoGrid {
     }
 }
 
+impl GeoGrid {
+    /// Like [`GeoGrid::sample`], but corners without data are left out and the others'
+    /// weights renormalised: a point between a sea node and a land node takes the sea value
+    /// (how currents are extended to a coastline finer than their grid). `NaN` only when no
+    /// corner with weight has data.
+    pub fn sample_valid(&self, lon: f64, lat: f64) -> Option<f64> {
+        let (i, fx) = bracket(&self.lon, lon)?;
+        let (j, fy) = bracket(&self.lat, lat)?;
+        let (mut acc, mut wsum) = (0.0, 0.0);
+        for (di, wx) in [(0, 1.0 - fx), (1, fx)] {
+            for (dj, wy) in [(0, 1.0 - fy), (1, fy)] {
+                let (w, v) = (wx * wy, self.value(i + di, j + dj));
+                if w > 0.0 && v.is_finite() {
+                    acc += w * v;
+                    wsum += w;
+                }
+            }
+        }
+        Some(if wsum > 0.0 { acc / wsum } else { f64::NAN })
+    }
+}
+
 /// The interval of the increasing `axis` holding `x` and the fraction along it; `None`
 /// outside. Axes may be irregular (binary search).
 fn bracket(axis: &[f64], x: f64) -> Option<(usize, f64)> {
@@ -202,6 +228,16 @@ mod tests {
         assert_eq!(g.sample(3.0, 11.0), Some(13.0));
         assert_eq!(g.sample(3.1, 11.0), None);
         assert_eq!(g.sample(f64::NAN, 11.0), None);
+    }
+
+    #[test]
+    fn sample_valid_leaves_out_corners_without_data() {
+        let mut g = grid();
+        g.values[0] = f64::NAN;
+        // Corners (0,0)=NaN, (1,0)=1, (0,1)=10, (1,1)=11 with equal weights: mean of the rest.
+        assert!((g.sample_valid(0.5, 10.5).unwrap() - 22.0 / 3.0).abs() < 1e-12);
+        g.values = vec![f64::NAN; 6];
+        assert!(g.sample_valid(0.5, 10.5).unwrap().is_nan());
     }
 
     #[test]
