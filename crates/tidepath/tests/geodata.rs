@@ -177,3 +177,29 @@ fn hycom_currents_with_missing_value_and_lon_360() {
     let e = read_currents(&fixture("bathy_classic.nc"), None, None, 0.0, None, 1).unwrap_err().to_string();
     assert!(e.contains("no velocity variable found"), "{e}");
 }
+
+#[test]
+fn geotiff_pixel_is_area_and_pixel_is_point_written_by_gdal() {
+    use tidepath::io::geodata::geotiff;
+    let area = geotiff::read(&fixture("bathy_area.tif"), None, 1).unwrap();
+    assert_eq!((area.nx(), area.ny()), (13, 11));
+    assert!((area.lon[0] + 125.0).abs() < 1e-9 && (area.lat[0] - 48.0).abs() < 1e-9, "{:?} {:?}", area.lon, area.lat);
+    assert_plane(&area, 1e-3, &[(-125.0, 48.0)]);
+    // Pixel-is-point: GDAL stores the first pixel's centre; the same lattice comes back.
+    let point = geotiff::read(&fixture("bathy_point.tif"), None, 1).unwrap();
+    assert!((point.lon[0] + 125.0).abs() < 1e-9 && (point.lat[10] - 49.0).abs() < 1e-9, "{:?}", point.lon);
+    assert_plane(&point, 1e-3, &[]);
+    let b = GeoBox::new(-124.55, 48.25, -124.15, 48.75, "box").unwrap();
+    let g = geotiff::read(&fixture("bathy_area.tif"), Some(&b), 1).unwrap();
+    assert_eq!((g.nx(), g.ny()), (6, 7));
+    assert_plane(&g, 1e-3, &[]);
+}
+
+#[test]
+fn a_projected_geotiff_is_refused_with_its_epsg_code() {
+    use tidepath::io::geodata::geotiff;
+    let e = geotiff::read(&fixture("bathy_utm.tif"), None, 1).unwrap_err().to_string();
+    assert!(e.contains("EPSG:32610 is a projected CRS"), "{e}");
+    let e = geotiff::read(&fixture("bathy_classic.nc"), None, 1).unwrap_err().to_string();
+    assert!(e.contains("not a readable GeoTIFF"), "{e}");
+}

@@ -46,7 +46,7 @@ fn geographic_inputs_are_checked() {
     assert!(e("start = [-124.67, 48.47", "start = [-124.67, 95.0").contains("mission.start: latitude"));
     assert!(e("start = [-124.67, 48.47", "start = [-120.0, 48.47").contains("mission.start"));
     assert!(e("path = \"salish_topobathy.nc\"", "path = \"nowhere.nc\"").contains("nowhere.nc"));
-    assert!(e("path = \"salish_topobathy.nc\"", "path = \"x.tif\"").contains("unknown data format"));
+    assert!(e("path = \"salish_topobathy.nc\"", "path = \"x.shp\"").contains("unknown data format"));
     assert!(e("frame = \"geographic\"\n", "").contains("set world.frame = \"geographic\""));
     assert!(e("goal = [-123.28, 48.40, 0.0]", "goal = [-123.28, 48.40, 0.0]\ndeparture = \"noon\"")
         .contains("mission.departure: `noon` is not an ISO 8601"));

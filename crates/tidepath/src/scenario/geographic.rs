@@ -204,6 +204,7 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
         let grid = match Format::of(&file, "world.terrain.path")? {
             Format::NetCdf => read_bathymetry(&file, variable.as_deref(), positive, Some(&subset), decimate)?,
             Format::EsriAscii => esri_ascii::read(&file, Some(&subset), decimate)?,
+            Format::GeoTiff => crate::io::geodata::geotiff::read(&file, Some(&subset), decimate)?,
         };
         spec.world.terrain = resample(&grid, &frame, lo, hi, *resolution, warnings)?;
     }

@@ -5,6 +5,7 @@
 
 pub mod currents;
 pub mod esri_ascii;
+pub mod geotiff;
 pub mod netcdf;
 
 use std::path::{Path, PathBuf};
@@ -49,6 +50,7 @@ pub const EMBEDDED: &[(&str, &[u8])] = &[
 pub enum Format {
     NetCdf,
     EsriAscii,
+    GeoTiff,
 }
 
 impl Format {
@@ -57,9 +59,10 @@ impl Format {
         match file.extension().as_str() {
             "nc" | "nc4" | "cdf" | "netcdf" | "grd" => Ok(Format::NetCdf),
             "asc" => Ok(Format::EsriAscii),
+            "tif" | "tiff" => Ok(Format::GeoTiff),
             other => Err(Error::input(
                 field,
-                format!("`{}`: unknown data format `.{other}` (known: .nc .nc4 .cdf .grd for NetCDF, .asc for ESRI ASCII grid)", file.display()),
+                format!("`{}`: unknown data format `.{other}` (known: .nc .nc4 .cdf .grd for NetCDF, .tif .tiff for GeoTIFF, .asc for ESRI ASCII grid)", file.display()),
             )),
         }
     }
