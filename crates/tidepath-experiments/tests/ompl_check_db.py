@@ -91,6 +91,11 @@ def main(path):
         ("stop_reason", 0, "max iterations"),
         ("stop_reason", 1, "max evaluations"),
         ("stop_reason", 2, "wall time"),
+        ("stop_reason", 3, "max expansions"),
+        ("stop_reason", 4, "max samples"),
+        ("stop_reason", 5, "target cost"),
+        ("stop_reason", 6, "cancelled"),
+        ("stop_reason", 7, "completed"),
     ])
     status = {v: d for n, v, d in enums if n == "status"}
     check("status 4/5/6", (status.get(4), status.get(5), status.get(6)),
