@@ -83,3 +83,69 @@ fn salish_forecast_reads_the_tide_from_netcdf() {
     assert!(r.status.is_success(), "{}", r.reason);
     common::recheck_plan(&s, &r).unwrap();
 }
+
+/// The forecast's clock is the vehicle's: the same route through the tidal current read from
+/// file takes a different time as its departure moves through the tide, and a later departure
+/// within one tidal cycle (12.42 h) gives back nearly the same time.
+#[test]
+fn departure_time_moves_the_travel_time_through_a_forecast_tide() {
+    let mut s = load("salish-forecast").unwrap();
+    let r = s.plan(&PlanRequest::default(), &mut |_| {}).unwrap();
+    let path = r.missions[0].points();
+    let mut times = Vec::new();
+    for hour in [0.0, 3.0, 6.0, 9.0, 12.42] {
+        s.missions[0].departure_time = hour * 3600.0;
+        let m = s.evaluate(&path).unwrap();
+        assert!(m.feasible, "{:?}", m.violations);
+        times.push(m.times.last().unwrap() - m.times[0]);
+    }
+    let (lo, hi) = times.iter().fold((f64::MAX, 0.0f64), |(a, b), &t| (a.min(t), b.max(t)));
+    assert!(hi > 1.05 * lo, "the tide should change the passage time: {times:?}");
+    // One M2 period later the tide repeats, up to the forecast's hourly sampling.
+    assert!((times[4] - times[0]).abs() < 0.01 * times[0], "{times:?}");
+}
+
+/// A forecast that lacks data at a water node (land or fill in its file): a route that needs
+/// the current there is refused with a violation naming the place; a goal there is invalid.
+#[test]
+fn routes_through_current_gaps_are_refused_naming_where() {
+    let text = r#"
+name = "gap"
+[world]
+dimensions = 2
+bounds = { min = [0.0, 0.0, 0.0], max = [4000.0, 4000.0, 0.0] }
+[world.current]
+kind = "grid"
+origin = [0.0, 0.0]
+spacing = [1000.0, 1000.0]
+shape = [5, 5]
+times = [0.0]
+u = [[0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2]]
+v = [[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]]
+no_data = [12]
+[vehicle]
+speed = 2.0
+[mission]
+start = [500.0, 2000.0, 0.0]
+goal = [3500.0, 2000.0, 0.0]
+[planner]
+id = "astar"
+"#;
+    let s = Scenario::from_toml(text, "gap.toml").unwrap();
+    let straight = s.evaluate(&[s.missions[0].start, s.missions[0].goal]).unwrap();
+    assert!(!straight.feasible);
+    let v = &straight.violations[0];
+    assert!(v.message.contains("no data") && v.message.ends_with("first at 1500, 2000"), "{}", v.message);
+    // A* goes around the four cells next to the gap and says it is feasible; the re-check agrees.
+    let r = s.plan(&PlanRequest::default(), &mut |_| {}).unwrap();
+    assert!(r.status.is_success(), "{}", r.reason);
+    common::recheck_plan(&s, &r).unwrap();
+    let bad =
+        Scenario::from_toml(&text.replace("goal = [3500.0, 2000.0, 0.0]", "goal = [2500.0, 2500.0, 0.0]"), "gap.toml")
+            .unwrap();
+    let r = bad.plan(&PlanRequest::default(), &mut |_| {}).unwrap();
+    assert_eq!(r.status, Status::InvalidGoal, "{}", r.reason);
+    assert!(r.reason.contains("no current data"), "{}", r.reason);
+    let e = Scenario::from_toml(&text.replace("no_data = [12]", "no_data = [25]"), "gap.toml").unwrap_err();
+    assert!(e.to_string().contains("world.current.no_data"), "{e}");
+}

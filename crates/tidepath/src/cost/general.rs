@@ -101,8 +101,8 @@ impl CostModel for GeneralCost {
         let (l0, t0) = Self::references(model);
         terms[0] = w.length * a.length / l0;
         terms[1] = w.time * a.travel_time / t0;
-        terms[2] =
-            w.collision * (a.collisions + a.bounds_violations + a.endpoint_violations + a.current_blocked) as f64;
+        terms[2] = w.collision
+            * (a.collisions + a.bounds_violations + a.endpoint_violations + a.current_blocked + a.current_gaps) as f64;
         terms[3] = w.turn * (a.turn_violations as f64 + a.turn_excess);
         terms[4] = w.pitch * (a.pitch_violations as f64 + a.pitch_excess);
         terms[..5].iter().sum()

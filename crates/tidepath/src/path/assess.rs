@@ -21,6 +21,8 @@ pub struct Assessment {
     pub endpoint_violations: u32,
     /// Segment pieces where the current stops the vehicle from holding its track.
     pub current_blocked: u32,
+    /// Segment pieces through places where the current forecast has no data.
+    pub current_gaps: u32,
     /// Joints whose heading change exceeds the vehicle's limit, and the summed excess (rad).
     pub turn_violations: u32,
     pub turn_excess: f64,
@@ -38,6 +40,7 @@ impl Assessment {
             + self.bounds_violations
             + self.endpoint_violations
             + self.current_blocked
+            + self.current_gaps
             + self.turn_violations
             + self.pitch_violations
     }
@@ -88,6 +91,7 @@ impl PathModel<'_> {
             let m = validator.motion(a, b, t);
             out.collisions += m.collisions;
             out.current_blocked += m.blocked;
+            out.current_gaps += m.gaps;
             t = m.arrival;
             times.push(t);
             let h = dir.truncate();

@@ -110,6 +110,16 @@ impl PathModel<'_> {
                             veh.speed
                         ),
                     ),
+                    MotionIssue::NoCurrentData => {
+                        let at = world.current.first_gap_on(a, b).map(|p| world.place(p.x, p.y)).unwrap_or_default();
+                        push(
+                            ViolationKind::Current,
+                            i,
+                            format!(
+                                "segment {i} passes where the current forecast has no data (land or fill), first at {at}"
+                            ),
+                        )
+                    }
                 }
             }
             t = m.arrival;

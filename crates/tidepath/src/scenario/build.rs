@@ -410,9 +410,12 @@ fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
         CurrentSpec::File { .. } => {
             return Err(Error::input("world.current.kind", "\"file\" needs world.frame = \"geographic\""))
         }
-        CurrentSpec::Grid { origin, spacing, shape, times, u, v } => {
+        CurrentSpec::Grid { origin, spacing, shape, times, u, v, no_data } => {
             let grid = grid2("world.current", *origin, *spacing, *shape)?;
-            Current::Grid(CurrentGrid::new(grid, times.clone(), u.clone(), v.clone(), "world.current")?)
+            Current::Grid(
+                CurrentGrid::new(grid, times.clone(), u.clone(), v.clone(), "world.current")?
+                    .with_gaps(no_data.clone(), "world.current")?,
+            )
         }
     })
 }

@@ -353,8 +353,10 @@ fn resample_with(
 /// Reads a current forecast file and rewrites `world.current` as a metric grid on the
 /// scenario clock: times are seconds after `epoch` (the file's first time when the scenario
 /// gives none), vectors are turned from east/north into the frame's x/y (which differ by the
-/// meridian convergence away from the origin), and nodes without data (land, fill) are still
-/// water, counted in a warning. Returns the epoch used.
+/// meridian convergence away from the origin), and water nodes without data (land or fill in
+/// the forecast, at any time step) become gaps: a motion through their cells is invalid and
+/// names where, since a current made up there could carry a plan onto the rocks. Counted in a
+/// warning. Returns the epoch used.
 fn load_currents(
     spec: &mut ScenarioSpec,
     frame: &GeoFrame,
@@ -392,8 +394,7 @@ fn load_currents(
     let mut shape = [0usize; 2];
     let mut grid_origin = lo;
     let mut spacing = [0.0; 2];
-    let mut missing = 0usize;
-    let mut first_missing: Option<(f64, f64)> = None;
+    let mut gaps: Vec<usize> = Vec::new();
     let water = water_test(&spec.world.terrain);
     for (gu, gv) in series.u.iter().zip(&series.v) {
         let (
@@ -416,8 +417,7 @@ fn load_currents(
             let (x, y) = (origin[0] + (k % sh[0]) as f64 * sp[0], origin[1] + (k / sh[0]) as f64 * sp[1]);
             if !e.is_finite() || !n.is_finite() {
                 if water(x, y) {
-                    missing += 1;
-                    first_missing.get_or_insert((x, y));
+                    gaps.push(k);
                 }
                 lu.push(0.0);
                 lv.push(0.0);
@@ -433,18 +433,22 @@ fn load_currents(
         us.push(lu);
         vs.push(lv);
     }
-    if let Some((x, y)) = first_missing {
+    gaps.sort_unstable();
+    gaps.dedup();
+    if let Some(&k) = gaps.first() {
+        let (x, y) =
+            (grid_origin[0] + (k % shape[0]) as f64 * spacing[0], grid_origin[1] + (k / shape[0]) as f64 * spacing[1]);
         let (lon, lat) = frame.inverse(x, y);
         warnings.push(format!(
-            "world.current: {missing} values at water nodes (over {} time steps) have no current data and are taken as still water; the first at {:.4} {}, {:.4} {}",
-            times.len(),
+            "world.current: {} water nodes have no current data at some time step (land or fill in the forecast); routes through them are refused; the first at {:.4} {}, {:.4} {}",
+            gaps.len(),
             lat.abs(),
             if lat < 0.0 { "S" } else { "N" },
             lon.abs(),
             if lon < 0.0 { "W" } else { "E" }
         ));
     }
-    spec.world.current = CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs };
+    spec.world.current = CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs, no_data: gaps };
     Ok(epoch)
 }
 

@@ -202,6 +202,9 @@ pub enum CurrentSpec {
         times: Vec<f64>,
         u: Vec<Vec<f64>>,
         v: Vec<Vec<f64>>,
+        /// Nodes (row-major indices) without data: motions through their cells are invalid.
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        no_data: Vec<usize>,
     },
 }
 

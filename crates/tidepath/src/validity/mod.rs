@@ -70,6 +70,8 @@ pub enum StateIssue {
         index: usize,
         inside: bool,
     },
+    /// The current forecast has no data here (land or fill in its file).
+    NoCurrentData,
 }
 
 /// One reason a motion is invalid.
@@ -81,6 +83,8 @@ pub enum MotionIssue {
     Obstacle(usize),
     /// The current stops the vehicle from holding the track on `pieces` pieces.
     Current { pieces: u32 },
+    /// The motion passes where the current forecast has no data.
+    NoCurrentData,
 }
 
 /// The verdict on one motion.
@@ -92,6 +96,8 @@ pub struct MotionCheck {
     pub collisions: u32,
     /// Pieces where the current stops the vehicle.
     pub blocked: u32,
+    /// 1 when the motion passes where the current forecast has no data, else 0.
+    pub gaps: u32,
     /// The first issue found (seabed, then fixed obstacles, then moving ones, then current).
     pub first: Option<MotionIssue>,
 }
@@ -153,6 +159,9 @@ impl<'a> Validator<'a> {
                 return Err(StateIssue::Obstacle { index, inside: o.contains(p, t, 0.0) });
             }
         }
+        if !self.world.current.has_data(p) {
+            return Err(StateIssue::NoCurrentData);
+        }
         Ok(())
     }
 
@@ -169,6 +178,9 @@ impl<'a> Validator<'a> {
             if o.contains(p, 0.0, safety) {
                 return Err(StateIssue::Obstacle { index, inside: o.contains(p, 0.0, 0.0) });
             }
+        }
+        if !self.world.current.has_data(p) {
+            return Err(StateIssue::NoCurrentData);
         }
         Ok(())
     }
@@ -203,6 +215,9 @@ impl<'a> Validator<'a> {
             StateIssue::Obstacle { index, inside } => {
                 let what = if inside { "inside" } else { "within the safety distance of" };
                 format!("{shown} is {what} obstacle {index} (world.obstacles[{index}])")
+            }
+            StateIssue::NoCurrentData => {
+                format!("{shown} has no current data in the forecast (land or fill in world.current.path)")
             }
         }
     }
@@ -323,6 +338,10 @@ impl<'a> Validator<'a> {
         out.blocked = blocked;
         if blocked > 0 {
             report(&mut out, MotionIssue::Current { pieces: blocked });
+        }
+        if world.current.first_gap_on(a, b).is_some() {
+            out.gaps = 1;
+            report(&mut out, MotionIssue::NoCurrentData);
         }
         out
     }

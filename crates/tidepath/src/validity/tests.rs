@@ -1,7 +1,7 @@
 //! Hand-computed checks of the state and motion validators.
 
 use super::*;
-use crate::geom::Aabb;
+use crate::geom::{Aabb, Vec2};
 use crate::world::current::{CurrentGrid, LambOseen};
 use crate::world::terrain::{GaussianPeaks, Peak};
 use crate::world::{Obstacle, RegularGrid2, Shape, Terrain};
@@ -129,4 +129,46 @@ fn moving_obstacles_are_tested_at_the_vehicle_clock() {
     assert!(val.motion_clearance(a, b, 0.0) < 1e-6);
     // The constant-speed reading of the whole segment misses it.
     assert!(!w.obstacles[0].segment_hits(a, b, 0.0, t_total, 1.0));
+}
+
+/// A forecast node without data makes the cells around it unusable: states there are invalid
+/// and motions through them are refused, counted per piece, while motions elsewhere pass.
+#[test]
+fn current_gaps_refuse_states_and_motions_that_need_them() {
+    let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -100.0), Vec3::new(400.0, 400.0, 0.0)));
+    // 5 x 5 nodes 100 m apart; node (2, 2) at (200, 200) has no data.
+    let grid = RegularGrid2::new(0.0, 0.0, 100.0, 100.0, 5, 5, "g").unwrap();
+    let layer = vec![0.1; 25];
+    let g = CurrentGrid::new(grid, vec![0.0], vec![layer.clone()], vec![layer], "g").unwrap();
+    assert!(g.clone().with_gaps(vec![25], "world.current").unwrap_err().to_string().contains("world.current.no_data"));
+    w.current = Current::Grid(g.with_gaps(vec![12], "g").unwrap());
+    let v = Vehicle { speed: 2.0, safety_distance: 1.0, ..Vehicle::default() };
+    let s = ModelSettings { current_step: 10.0, ..ModelSettings::default() };
+    let val = Validator::new(&w, &v, &s);
+    // Cells (1..3) x (1..3) touch the gap node; the node's own row and column at the cell edge too.
+    assert_eq!(val.state(Vec3::new(150.0, 250.0, -50.0), 0.0), Err(StateIssue::NoCurrentData));
+    assert_eq!(val.fixed_state(Vec3::new(250.0, 150.0, -50.0)), Err(StateIssue::NoCurrentData));
+    assert_eq!(val.state(Vec3::new(50.0, 50.0, -50.0), 0.0), Ok(()));
+    // On the line x = 100 the weight of column 2 is zero: data only.
+    assert_eq!(val.state(Vec3::new(100.0, 250.0, -50.0), 0.0), Ok(()));
+    assert!(val.describe(Vec3::new(150.0, 250.0, -50.0), StateIssue::NoCurrentData).contains("no current data"));
+    // Along y = 50 (clear); along y = 150 from x = 0 to 400 it enters cell (1, 1) at x = 100,
+    // reported at the middle of its stretch there.
+    assert!(val.motion(Vec3::new(0.0, 50.0, -50.0), Vec3::new(400.0, 50.0, -50.0), 0.0).valid());
+    let m = val.motion(Vec3::new(0.0, 150.0, -50.0), Vec3::new(400.0, 150.0, -50.0), 0.0);
+    assert_eq!((m.gaps, m.first), (1, Some(MotionIssue::NoCurrentData)));
+    assert_eq!(
+        w.current.first_gap_on(Vec3::new(0.0, 150.0, 0.0), Vec3::new(400.0, 150.0, 0.0)),
+        Some(Vec2::new(150.0, 150.0))
+    );
+    // A diagonal that clips the corner of cell (1, 1) by 1 m: far shorter than any sampling step.
+    let clip = (Vec3::new(0.0, 201.0, -50.0), Vec3::new(201.0, 0.0, -50.0));
+    assert!(!val.motion(clip.0, clip.1, 0.0).valid());
+    let miss = (Vec3::new(0.0, 199.0, -50.0), Vec3::new(199.0, 0.0, -50.0));
+    assert!(val.motion(miss.0, miss.1, 0.0).valid());
+    // Backwards, vertical, and a point.
+    assert!(!val.motion(Vec3::new(400.0, 150.0, -50.0), Vec3::new(0.0, 150.0, -50.0), 0.0).valid());
+    assert!(!val.motion(Vec3::new(250.0, 0.0, -50.0), Vec3::new(250.0, 400.0, -50.0), 0.0).valid());
+    assert!(val.motion(Vec3::new(50.0, 0.0, -50.0), Vec3::new(50.0, 400.0, -50.0), 0.0).valid());
+    assert!(!val.motion(Vec3::new(250.0, 250.0, -50.0), Vec3::new(250.0, 250.0, -50.0), 0.0).valid());
 }

@@ -16,6 +16,10 @@ pub struct CurrentGrid {
     /// One row-major layer per time.
     pub u: Vec<Vec<f64>>,
     pub v: Vec<Vec<f64>>,
+    /// Nodes where the forecast has no data (land or fill in the source file), sorted; their
+    /// u, v are 0 so interpolation stays finite, and [`CurrentGrid::has_data`] tells motions
+    /// through them apart, since guessing a current there would be inventing data.
+    pub gaps: Vec<usize>,
 }
 
 impl CurrentGrid {
@@ -71,7 +75,108 @@ impl CurrentGrid {
                 }
             }
         }
-        Ok(Self { grid, times, u, v })
+        Ok(Self { grid, times, u, v, gaps: Vec::new() })
+    }
+
+    /// Marks `nodes` (row-major indices, any order) as having no data; `field` names the
+    /// scenario field for the error on an index outside the grid.
+    pub fn with_gaps(mut self, mut nodes: Vec<usize>, field: &str) -> Result<Self> {
+        nodes.sort_unstable();
+        nodes.dedup();
+        if let Some(&k) = nodes.last() {
+            if k >= self.grid.len() {
+                return Err(Error::input(
+                    format!("{field}.no_data"),
+                    format!("node {k} is outside the grid of {} x {} nodes", self.grid.nx, self.grid.ny),
+                ));
+            }
+        }
+        self.gaps = nodes;
+        Ok(self)
+    }
+
+    /// Whether the velocity at (x, y) comes from data only: every node with a positive weight
+    /// in the bilinear interpolation has data. Always true without gaps.
+    #[inline]
+    pub fn has_data(&self, x: f64, y: f64) -> bool {
+        if self.gaps.is_empty() {
+            return true;
+        }
+        let g = &self.grid;
+        let (i, j, fu, fv) = g.locate(x, y);
+        let k = j * g.nx + i;
+        let gap = |n: usize| self.gaps.binary_search(&n).is_ok();
+        let (right, up) = (fu > 0.0, fv > 0.0);
+        !(gap(k) || (right && gap(k + 1)) || (up && gap(k + g.nx)) || (right && up && gap(k + g.nx + 1)))
+    }
+
+    /// The first point of the horizontal segment (ax, ay) -> (bx, by) inside a cell with a gap
+    /// at a corner, if any (the midpoint of the segment's stretch in that cell). Exact: walks
+    /// the cells the segment crosses, at most nx + ny of them, so a segment that clips a corner
+    /// of such a cell is found however short the stretch; the parts of the segment outside the
+    /// grid are not judged (the grid covers the domain).
+    pub fn first_gap_on(&self, ax: f64, ay: f64, bx: f64, by: f64) -> Option<(f64, f64)> {
+        if self.gaps.is_empty() {
+            return None;
+        }
+        let g = &self.grid;
+        let (u0, v0) = ((ax - g.x0) / g.dx, (ay - g.y0) / g.dy);
+        let (du, dv) = ((bx - g.x0) / g.dx - u0, (by - g.y0) / g.dy - v0);
+        let (umax, vmax) = ((g.nx - 1) as f64, (g.ny - 1) as f64);
+        // Clip to the grid's rectangle in cell units.
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        for (p, d, hi) in [(u0, du, umax), (v0, dv, vmax)] {
+            if d == 0.0 {
+                if !(0.0..=hi).contains(&p) {
+                    return None;
+                }
+            } else {
+                let (ta, tb) = (-p / d, (hi - p) / d);
+                t0 = t0.max(ta.min(tb));
+                t1 = t1.min(ta.max(tb));
+            }
+        }
+        if t0.is_nan() || t1.is_nan() || t0 > t1 {
+            return None;
+        }
+        let at = |t: f64| (u0 + du * t, v0 + dv * t);
+        let world = |t: f64| (ax + (bx - ax) * t, ay + (by - ay) * t);
+        let gap_cell = |t: f64| {
+            let (u, v) = at(t);
+            let i = (u.floor().max(0.0) as usize).min(g.nx - 2);
+            let j = (v.floor().max(0.0) as usize).min(g.ny - 2);
+            let k = j * g.nx + i;
+            [k, k + 1, k + g.nx, k + g.nx + 1].iter().any(|n| self.gaps.binary_search(n).is_ok())
+        };
+        if t0 == t1 {
+            let (x, y) = world(t0);
+            return (!self.has_data(x, y)).then_some((x, y));
+        }
+        // The next parameter past t where the segment crosses a grid line along one axis.
+        let next = |p: f64, d: f64, t: f64| {
+            let c = p + d * t;
+            if d > 0.0 {
+                (c.floor() + 1.0 - p) / d
+            } else if d < 0.0 {
+                (c.ceil() - 1.0 - p) / d
+            } else {
+                f64::INFINITY
+            }
+        };
+        let mut t = t0;
+        // Each step passes at least one grid line; the bound only guards rounding.
+        for _ in 0..(g.nx + g.ny + 4) {
+            let te = next(u0, du, t).min(next(v0, dv, t)).min(t1);
+            let tm = 0.5 * (t + te);
+            if te > t && gap_cell(tm) {
+                return Some(world(tm));
+            }
+            if te >= t1 {
+                break;
+            }
+            t = te.max(t + f64::EPSILON);
+        }
+        None
     }
 
     /// The two layers around `t` and the weight of the second; outside the time range the

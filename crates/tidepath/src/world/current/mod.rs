@@ -45,6 +45,26 @@ impl Current {
         }
     }
 
+    /// Whether the current at `p` comes from data: false only inside the cells of a gridded
+    /// forecast next to a node without data (land or fill in its file).
+    #[inline]
+    pub fn has_data(&self, p: Vec3) -> bool {
+        match self {
+            Current::Grid(grid) => grid.has_data(p.x, p.y),
+            _ => true,
+        }
+    }
+
+    /// The first point of the horizontal projection of a -> b where the current has no data
+    /// (see [`CurrentGrid::first_gap_on`]); `None` for currents without gaps.
+    #[inline]
+    pub fn first_gap_on(&self, a: Vec3, b: Vec3) -> Option<Vec2> {
+        match self {
+            Current::Grid(grid) => grid.first_gap_on(a.x, a.y, b.x, b.y).map(|(x, y)| Vec2::new(x, y)),
+            _ => None,
+        }
+    }
+
     /// An estimate of the largest horizontal current speed (m/s) over the horizontal extent of
     /// `bounds` at time `t`, for scaling arrows and speed bounds in plots.
     ///
