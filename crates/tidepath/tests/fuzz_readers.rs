@@ -118,8 +118,7 @@ fn corrupted_data_files_give_errors_not_panics() {
     let seed = env_u64("TIDEPATH_FUZZ_SEED", 1);
     let from = env_u64("TIDEPATH_FUZZ_FROM", 0);
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/geo");
-    let originals: Vec<(&str, Vec<u8>)> =
-        FIXTURES.iter().map(|n| (*n, std::fs::read(dir.join(n)).unwrap())).collect();
+    let originals: Vec<(&str, Vec<u8>)> = FIXTURES.iter().map(|n| (*n, std::fs::read(dir.join(n)).unwrap())).collect();
     let tmp = tempfile::tempdir().unwrap();
     let started = Instant::now();
     let mut failures = Vec::new();

@@ -149,3 +149,76 @@ id = "astar"
     let e = Scenario::from_toml(&text.replace("no_data = [12]", "no_data = [25]"), "gap.toml").unwrap_err();
     assert!(e.to_string().contains("world.current.no_data"), "{e}");
 }
+
+/// Fleet positions and obstacles given in degrees land where the projection puts them: centres
+/// and mission ends exactly, boxes as the rectangle holding their projected corners, radii in
+/// metres unchanged, velocities (east, north) turned into the frame with their speed kept.
+#[test]
+fn fleet_and_obstacles_in_degrees_are_projected() {
+    let text = r#"
+name = "geo-fleet"
+[world]
+dimensions = 3
+frame = "geographic"
+bounds = { min = [-125.0, 48.0, -500.0], max = [-123.0, 49.0, 0.0] }
+[[world.obstacles]]
+kind = "sphere"
+center = [-124.5, 48.2, -100.0]
+radius = 800.0
+velocity = [0.5, 0.0, 0.0]
+[[world.obstacles]]
+kind = "box"
+min = [-123.6, 48.6, -300.0]
+max = [-123.4, 48.7, -50.0]
+[[world.obstacles]]
+kind = "cylinder"
+center = [-123.9, 48.5]
+radius = 500.0
+[[missions]]
+name = "a"
+start = [-124.9, 48.1, -50.0]
+goal = [-123.1, 48.9, -60.0]
+departure = "2026-01-01T00:00:00Z"
+[[missions]]
+name = "b"
+start = [-124.9, 48.9, -70.0]
+goal = [-123.1, 48.1, -80.0]
+departure = "2026-01-01T00:30:00Z"
+"#;
+    let s = Scenario::from_toml(text, "geo-fleet.toml").unwrap();
+    let f = s.frame.as_ref().unwrap();
+    let at = |lon: f64, lat: f64| f.forward(lon, lat, "t").unwrap();
+    let close = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0).abs() < 1e-6 && (a.1 - b.1).abs() < 1e-6;
+    let ends = [((-124.9, 48.1), (-123.1, 48.9)), ((-124.9, 48.9), (-123.1, 48.1))];
+    for (m, (a, b)) in s.missions.iter().zip(ends) {
+        assert!(close((m.start.x, m.start.y), at(a.0, a.1)) && close((m.goal.x, m.goal.y), at(b.0, b.1)));
+    }
+    assert_eq!((s.missions[0].start.z, s.missions[1].goal.z), (-50.0, -80.0));
+    // Without an epoch the first ISO departure is the clock's zero; the second leaves 30 min later.
+    assert_eq!(s.missions[1].departure_time - s.missions[0].departure_time, 1800.0);
+    use tidepath::world::Shape;
+    match &s.world.obstacles[0].shape {
+        Shape::Sphere { center, radius } => {
+            assert!(close((center.x, center.y), at(-124.5, 48.2)) && center.z == -100.0 && *radius == 800.0);
+            let v = s.world.obstacles[0].velocity;
+            assert!((v.length() - 0.5).abs() < 1e-9 && v.x > 0.49 && v.y.abs() > 1e-4, "{v:?}");
+        }
+        other => panic!("{other:?}"),
+    }
+    match &s.world.obstacles[1].shape {
+        Shape::Box { min, max } => {
+            for (lon, lat) in [(-123.6, 48.6), (-123.6, 48.7), (-123.4, 48.6), (-123.4, 48.7)] {
+                let (x, y) = at(lon, lat);
+                assert!(x >= min.x - 1e-6 && x <= max.x + 1e-6 && y >= min.y - 1e-6 && y <= max.y + 1e-6);
+            }
+            assert_eq!((min.z, max.z), (-300.0, -50.0));
+        }
+        other => panic!("{other:?}"),
+    }
+    match &s.world.obstacles[2].shape {
+        Shape::Cylinder { center, radius, .. } => {
+            assert!(close((center.x, center.y), at(-123.9, 48.5)) && *radius == 500.0)
+        }
+        other => panic!("{other:?}"),
+    }
+}

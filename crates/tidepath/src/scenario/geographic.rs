@@ -168,6 +168,11 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
                 let (x, y) = frame.forward(c[0], c[1], &format!("world.obstacles[{i}].center"))?;
                 c[0] = x;
                 c[1] = y;
+                // A velocity is given east and north (m/s).
+                if let Some(v) = &mut o.velocity {
+                    let (vx, vy) = east_north_to_frame(&frame, x, y, v[0], v[1]);
+                    *v = [vx, vy, v[2]];
+                }
             }
         }
         if let (Some(a), Some(b)) = (&mut o.min, &mut o.max) {
@@ -181,6 +186,10 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
             a[1] = xs.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
             b[0] = xs.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
             b[1] = xs.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+            if let (None, Some(v)) = (&o.center, &mut o.velocity) {
+                let (vx, vy) = east_north_to_frame(&frame, (a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0, v[0], v[1]);
+                *v = [vx, vy, v[2]];
+            }
         }
     }
     if let TerrainSpec::File { path, variable, positive, decimate, resolution } = &spec.world.terrain {
@@ -423,12 +432,9 @@ fn load_currents(
                 lv.push(0.0);
                 continue;
             }
-            let (lon, lat) = frame.inverse(x, y);
-            let north = frame.forward(lon, (lat + 1e-3).min(90.0), "world.current").map(|(x2, y2)| (x2 - x, y2 - y));
-            let angle = north.map(|(dx, dy)| dx.atan2(dy)).unwrap_or(0.0);
-            let (s, c) = angle.sin_cos();
-            lu.push(e * c + n * s);
-            lv.push(-e * s + n * c);
+            let (u, v) = east_north_to_frame(frame, x, y, e, n);
+            lu.push(u);
+            lv.push(v);
         }
         us.push(lu);
         vs.push(lv);
@@ -450,6 +456,17 @@ fn load_currents(
     }
     spec.world.current = CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs, no_data: gaps };
     Ok(epoch)
+}
+
+/// A horizontal vector given east and north at the frame point (x, y), in the frame's x and y:
+/// they differ by the meridian convergence, the angle of local north on the map, which is 0 at
+/// the origin and grows away from it.
+fn east_north_to_frame(frame: &GeoFrame, x: f64, y: f64, east: f64, north: f64) -> (f64, f64) {
+    let (lon, lat) = frame.inverse(x, y);
+    let up = frame.forward(lon, (lat + 1e-3).min(90.0), "vector").map(|(x2, y2)| (x2 - x, y2 - y));
+    let angle = up.map(|(dx, dy)| dx.atan2(dy)).unwrap_or(0.0);
+    let (s, c) = angle.sin_cos();
+    (east * c + north * s, -east * s + north * c)
 }
 
 /// Whether a metric point is water (seabed below the sea surface) in a resampled terrain grid;
