@@ -175,9 +175,19 @@ def geotiffs():
     os.remove(os.path.join(OUT, "bathy.prj"))  # GDAL's side file; the reader takes degrees
 
 
+def nocoords():
+    """CDF-1 with an elevation grid on bare dimensions: no coordinate variables at all."""
+    with Dataset(os.path.join(OUT, "bathy_nocoords.nc"), "w", format="NETCDF3_CLASSIC") as ds:
+        ds.createDimension("row", len(LAT))
+        ds.createDimension("col", len(LON))
+        z = ds.createVariable("elevation", "f4", ("row", "col"))
+        z.units = "m"
+        z[:] = plane(LON[None, :], LAT[:, None]).astype("f4")
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
-    for make in [classic, offset64, cdf5, nc4, global360, copernicus, hycom, geotiffs]:
+    for make in [classic, offset64, cdf5, nc4, global360, copernicus, hycom, geotiffs, nocoords]:
         make()
     for name in sorted(os.listdir(OUT)):
         print(name, os.path.getsize(os.path.join(OUT, name)))

@@ -115,6 +115,41 @@ fn bad_requests_name_the_problem() {
     assert!(
         e(read_bathymetry(&fixture("currents_copernicus.nc"), Some("uo"), None, None, 1)).contains("say which index")
     );
+    // No coordinate variables: the dimensions alone say nothing about where the grid is.
+    let msg = e(read_bathymetry(&fixture("bathy_nocoords.nc"), None, None, None, 1));
+    assert!(msg.contains("bathy_nocoords.nc") && msg.contains("longitude"), "{msg}");
+    // Truncated files (a download cut short), at several lengths, in every format: one line
+    // naming the file, or (where only unused trailing bytes went, as HDF5 files can have) the
+    // same grid as the whole file.
+    let dir = tempfile::tempdir().unwrap();
+    let read = |name: &str, file: &DataFile| match name.rsplit('.').next().unwrap() {
+        "nc" => read_bathymetry(file, None, None, None, 1),
+        "tif" => tidepath::io::geodata::geotiff::read(file, None, 1),
+        _ => esri_ascii::read(file, None, 1),
+    };
+    let same = |a: &GeoGrid, b: &GeoGrid| {
+        a.lon == b.lon
+            && a.lat == b.lat
+            && a.values.iter().zip(&b.values).all(|(x, y)| x == y || (x.is_nan() && y.is_nan()))
+    };
+    let mut errors = 0;
+    for name in ["bathy_classic.nc", "bathy_nc4.nc", "bathy_area.tif", "bathy.asc"] {
+        let whole = read(name, &fixture(name)).unwrap();
+        let bytes = std::fs::read(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/geo").join(name)).unwrap();
+        for keep in [0, 7, bytes.len() / 3, bytes.len() - 40] {
+            let path = dir.path().join(name);
+            std::fs::write(&path, &bytes[..keep]).unwrap();
+            match read(name, &DataFile::Path(path)) {
+                Ok(g) => assert!(keep > bytes.len() / 2 && same(&g, &whole), "{name} cut at {keep} read as {g:?}"),
+                Err(err) => {
+                    let msg = err.to_string();
+                    assert!(msg.contains(name) && !msg.contains('\n'), "{name} cut at {keep}: {msg}");
+                    errors += 1;
+                }
+            }
+        }
+    }
+    assert!(errors >= 14, "{errors}");
 }
 
 /// The projection's distance error against geodesic distances (WGS84, geographiclib) over a
