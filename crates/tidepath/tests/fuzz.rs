@@ -27,6 +27,7 @@ fn corpus() -> Vec<String> {
         include_str!("data/fleet.toml").to_string(),
         include_str!("data/moving_jet.toml").to_string(),
         include_str!("data/tidal_grid.toml").to_string(),
+        include_str!("data/cells_wall.toml").to_string(),
     ]
 }
 

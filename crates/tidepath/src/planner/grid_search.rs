@@ -25,7 +25,11 @@ use crate::raster::Raster;
 use crate::registry::Param;
 use crate::rng::Rng;
 use crate::termination::{StopReason, Termination};
-use crate::world::{Current, Dims, World};
+use crate::world::{Current, Dims, Terrain, World};
+
+/// Most cells along the domain's longer side for which a map given cell by cell is searched
+/// on its own cells by default (beyond, the default raster applies).
+const MAX_MAP_CELLS: f64 = 1000.0;
 
 /// The parameters of the grid planners.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -58,7 +62,7 @@ pub const PARAMS: &[Param] = &[
     Param {
         name: "cells",
         range: "0, or integer in [4, 4096]",
-        help: "cells along the domain's longer side; 0: 200 in 2-D, 80 in 3-D (default 0)",
+        help: "cells along the domain's longer side; 0: a cell map's own cells, else 200 in 2-D, 80 in 3-D (default 0)",
     },
     Param {
         name: "layers",
@@ -134,7 +138,25 @@ impl GridSearch {
             0 => 200,
             n => n,
         };
-        let cell = if self.params.cell > 0.0 { self.params.cell } else { size.x.max(size.y) / cells as f64 };
+        // A seabed given cell by cell is searched on its own cells (when they are not too many
+        // and nothing else was asked): the raster then sees exactly the map.
+        let map_cell = match &w.terrain {
+            Terrain::Cells(c)
+                if self.params.cells == 0
+                    && c.dx == c.dy
+                    && size.x.max(size.y) / c.dx <= MAX_MAP_CELLS
+                    && c.x0 == w.bounds.min.x
+                    && c.y0 == w.bounds.min.y =>
+            {
+                Some(c.dx)
+            }
+            _ => None,
+        };
+        let cell = if self.params.cell > 0.0 {
+            self.params.cell
+        } else {
+            map_cell.unwrap_or(size.x.max(size.y) / cells as f64)
+        };
         let band = (w.bounds.max.z.min(m.vehicle.z_max()) - w.bounds.min.z.max(m.vehicle.z_min())).max(1e-9);
         Raster::new(w, &m.vehicle, cell, band / self.params.layers as f64, m.start.z)
     }

@@ -254,7 +254,7 @@ fn build_world(spec: &WorldSpec) -> Result<World> {
         ));
     }
     let bounds = Aabb::new(min, max);
-    let terrain = build_terrain(&spec.terrain)?;
+    let terrain = build_terrain(&spec.terrain, &bounds)?;
     if spec.obstacles.len() > MAX_OBSTACLES {
         return Err(Error::input(
             "world.obstacles",
@@ -270,7 +270,7 @@ fn grid2(field: &str, origin: P2, spacing: P2, shape: [usize; 2]) -> Result<Regu
     RegularGrid2::new(origin[0], origin[1], spacing[0], spacing[1], shape[0], shape[1], field)
 }
 
-fn build_terrain(spec: &TerrainSpec) -> Result<Terrain> {
+fn build_terrain(spec: &TerrainSpec, bounds: &Aabb) -> Result<Terrain> {
     Ok(match spec {
         TerrainSpec::None => Terrain::None,
         TerrainSpec::Peaks { base, peaks, ceiling } => {
@@ -286,6 +286,7 @@ fn build_terrain(spec: &TerrainSpec) -> Result<Terrain> {
             let grid = grid2("world.terrain", *origin, *spacing, *shape)?;
             Terrain::Grid(ElevationGrid::new(grid, elevations.clone(), "world.terrain")?)
         }
+        TerrainSpec::Cells(cells) => Terrain::Cells(super::cells::build_terrain(cells, bounds)?),
         // Geographic scenarios turn files into grids before the world is built.
         TerrainSpec::File { .. } => {
             return Err(Error::input("world.terrain.kind", "\"file\" needs world.frame = \"geographic\""))
@@ -410,6 +411,7 @@ fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
         CurrentSpec::File { .. } => {
             return Err(Error::input("world.current.kind", "\"file\" needs world.frame = \"geographic\""))
         }
+        CurrentSpec::Cells(cells) => Current::Grid(super::cells::build_current(cells)?),
         CurrentSpec::Grid { origin, spacing, shape, times, u, v, no_data } => {
             let grid = grid2("world.current", *origin, *spacing, *shape)?;
             Current::Grid(

@@ -6,6 +6,7 @@
 
 mod build;
 mod builtin;
+mod cells;
 pub mod geographic;
 mod jet;
 mod plan;

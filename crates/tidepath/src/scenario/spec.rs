@@ -95,6 +95,10 @@ pub enum TerrainSpec {
     },
     /// Node elevations on a regular grid, row-major by y then x.
     Grid { origin: P2, spacing: P2, shape: [usize; 2], elevations: Vec<f64> },
+    /// A grid given cell by cell, constant inside each cell (occupancy grids): a `map` of
+    /// rows (`#` land, `.` water) or one elevation per cell; rows run north to south, as a
+    /// map is read.
+    Cells(CellsSpec),
     /// A bathymetry file on longitude/latitude (NetCDF or ESRI ASCII grid), for geographic
     /// scenarios: read inside the box, resampled onto a metric grid.
     File {
@@ -113,6 +117,42 @@ pub enum TerrainSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         resolution: Option<f64>,
     },
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CellsSpec {
+    /// South-west corner of the grid (m).
+    pub origin: P2,
+    /// Side of a (square) cell (m).
+    pub resolution: f64,
+    /// Rows from north to south, one character per cell: `#` land, `.` water.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub map: Option<Vec<String>>,
+    /// Water depth (m, positive) of the `.` cells; default the domain's depth (-bounds.min.z),
+    /// or 10 m where the domain is flat.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub water_depth: Option<f64>,
+    /// Height (m) of the `#` cells above the sea surface (default 10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub land_height: Option<f64>,
+    /// Instead of `map`: one elevation per cell (m, negative below the surface), rows from
+    /// north to south.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub elevations: Option<Vec<Vec<f64>>>,
+}
+
+/// A current given per cell, at the cells' centres (bilinear between them).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CurrentCellsSpec {
+    /// South-west corner of the grid (m).
+    pub origin: P2,
+    /// Side of a (square) cell (m).
+    pub resolution: f64,
+    /// Eastward and northward components (m/s), rows from north to south.
+    pub u: Vec<Vec<f64>>,
+    pub v: Vec<Vec<f64>>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -194,6 +234,8 @@ pub enum CurrentSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         resolution: Option<f64>,
     },
+    /// One u, v per cell of a grid given cell by cell (with terrain `kind = "cells"`).
+    Cells(CurrentCellsSpec),
     /// u, v on a regular grid at several times; bilinear in space, linear in time.
     Grid {
         origin: P2,

@@ -7,9 +7,11 @@
 //! (a second-order bound between samples), grids give the exact minimum clearance along a
 //! stretch spanning at most 2 x 2 cells (the surface is bilinear per cell).
 
+mod cells;
 mod grid;
 mod peaks;
 
+pub use cells::CellGrid;
 pub use grid::ElevationGrid;
 pub use peaks::{GaussianPeaks, Peak};
 
@@ -21,6 +23,8 @@ pub enum Terrain {
     None,
     Peaks(GaussianPeaks),
     Grid(ElevationGrid),
+    /// One elevation per cell, constant inside it (occupancy grids).
+    Cells(CellGrid),
 }
 
 impl Terrain {
@@ -29,6 +33,7 @@ impl Terrain {
     pub fn exact_min_clearance(&self, a: Vec3, b: Vec3, s0: f64, s1: f64) -> Option<f64> {
         match self {
             Terrain::Grid(g) => g.min_clearance_on(a, b, s0, s1),
+            Terrain::Cells(c) => Some(c.min_clearance_on(a, b, s0, s1)),
             _ => None,
         }
     }
@@ -40,6 +45,7 @@ impl Terrain {
             Terrain::None => f64::NEG_INFINITY,
             Terrain::Peaks(p) => p.elevation(x, y),
             Terrain::Grid(g) => g.grid.bilinear(&g.z, x, y),
+            Terrain::Cells(c) => c.elevation(x, y),
         }
     }
 
@@ -51,6 +57,7 @@ impl Terrain {
             Terrain::None => f64::NEG_INFINITY,
             Terrain::Peaks(p) => p.max_in(x0, y0, x1, y1),
             Terrain::Grid(g) => g.max_in(x0, y0, x1, y1),
+            Terrain::Cells(c) => c.max_in(x0, y0, x1, y1),
         }
     }
 
@@ -62,6 +69,7 @@ impl Terrain {
             Terrain::None => f64::NEG_INFINITY,
             Terrain::Peaks(p) => p.min_in(x0, y0, x1, y1),
             Terrain::Grid(g) => g.min_in(x0, y0, x1, y1),
+            Terrain::Cells(c) => c.min_in(x0, y0, x1, y1),
         }
     }
 
@@ -73,6 +81,7 @@ impl Terrain {
             Terrain::None => None,
             Terrain::Peaks(p) => p.min_sigma(),
             Terrain::Grid(g) => Some(g.grid.dx.min(g.grid.dy)),
+            Terrain::Cells(c) => Some(c.dx.min(c.dy)),
         }
     }
 
@@ -124,6 +133,7 @@ impl Terrain {
                 }
             }
             Terrain::Grid(g) => g.z_min.abs().max(g.z_max.abs()).max(g.z_max - g.z_min),
+            Terrain::Cells(c) => c.z_min.abs().max(c.z_max.abs()).max(c.z_max - c.z_min),
         }
     }
 }

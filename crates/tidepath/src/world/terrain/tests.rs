@@ -206,3 +206,77 @@ fn no_terrain_is_minus_infinity() {
     assert_eq!(Terrain::None.elevation(1.0, 2.0), f64::NEG_INFINITY);
     assert_eq!(Terrain::None.max_elevation_in(0.0, 0.0, 1.0, 1.0), f64::NEG_INFINITY);
 }
+
+/// A 4 x 3 map, cells 10 m x 20 m from (100, 200): land (+5) at cells (1, 1) and (2, 1),
+/// water at -30 elsewhere, except cell (3, 0) at -12.
+fn cell_map() -> Terrain {
+    let mut z = vec![-30.0; 12];
+    z[4 + 1] = 5.0;
+    z[4 + 2] = 5.0;
+    z[3] = -12.0;
+    Terrain::Cells(CellGrid::new([100.0, 200.0], [10.0, 20.0], [4, 3], z, "cells").unwrap())
+}
+
+#[test]
+fn cells_are_constant_inside_and_take_the_lowest_value_on_edges() {
+    let t = cell_map();
+    assert_eq!(t.elevation(115.0, 230.0), 5.0); // inside cell (1, 1)
+    assert_eq!(t.elevation(105.0, 230.0), -30.0); // cell (0, 1)
+    assert_eq!(t.elevation(110.0, 230.0), -30.0); // on the edge between them
+    assert_eq!(t.elevation(120.0, 230.0), 5.0); // between two land cells
+    assert_eq!(t.elevation(120.0, 240.0), -30.0); // on the corner of land and water
+    assert_eq!(t.elevation(135.0, 210.0), -12.0);
+    assert_eq!(t.elevation(0.0, 0.0), -30.0); // beyond the grid the edge cells hold
+    assert_eq!(t.elevation(1e6, 210.0), -12.0);
+    // Rectangles: exactly the cells whose inside they meet (max) or whose closure (min).
+    assert_eq!(t.max_elevation_in(100.0, 200.0, 110.0, 260.0), -30.0); // column 0, edges included
+    assert_eq!(t.max_elevation_in(100.0, 200.0, 110.1, 260.0), 5.0);
+    assert_eq!(t.max_elevation_in(111.0, 221.0, 111.0, 221.0), 5.0); // a point
+    assert_eq!(t.min_elevation_in(111.0, 221.0, 129.0, 239.0), 5.0); // inside the land
+    assert_eq!(t.min_elevation_in(110.0, 221.0, 129.0, 239.0), -30.0); // touches water
+    assert_eq!(t.max_elevation_in(130.0, 200.0, 140.0, 220.0), -12.0);
+    assert_eq!(t.feature_length(), Some(10.0));
+    let e = CellGrid::new([0.0, 0.0], [1.0, 1.0], [2, 2], vec![0.0; 3], "world.terrain").unwrap_err().to_string();
+    assert!(e.contains("world.terrain") && e.contains("need 4 values, got 3"), "{e}");
+    let e = CellGrid::new([0.0, 0.0], [0.0, 1.0], [1, 1], vec![0.0], "world.terrain").unwrap_err().to_string();
+    assert!(e.contains("cell_size"), "{e}");
+}
+
+#[test]
+fn cells_clearance_along_segments_is_exact() {
+    let t = cell_map();
+    let hit = |a: Vec3, b: Vec3| t.exact_min_clearance(a, b, 0.0, 1.0).unwrap();
+    // Along the southern edge of the land (y = 220) at -1 m: 29 m above the water, not in land.
+    assert_eq!(hit(Vec3::new(100.0, 220.0, -1.0), Vec3::new(140.0, 220.0, -1.0)), 29.0);
+    // Across the land at -1 m: 6 m below its top.
+    assert_eq!(hit(Vec3::new(100.0, 230.0, -1.0), Vec3::new(140.0, 230.0, -1.0)), -6.0);
+    // Descending from cell (2, 0) at -30 into (3, 0) at -12: 20 m at the edge x = 130 (z = -10),
+    // then -7 m at the end (z = -19).
+    let m = hit(Vec3::new(125.0, 210.0, -5.0), Vec3::new(139.0, 210.0, -19.0));
+    assert!((m - -7.0).abs() < 1e-12, "{m}");
+    // Diagonals: through cell (1, 1) is a hit; through the corner (110, 220) of land (1, 1),
+    // from water (0, 1) to water (1, 0), only touches it.
+    assert_eq!(hit(Vec3::new(110.0, 240.0, -1.0), Vec3::new(130.0, 200.0, -1.0)), -6.0);
+    assert_eq!(hit(Vec3::new(100.0, 240.0, -1.0), Vec3::new(120.0, 200.0, -1.0)), 29.0);
+    // Dense sampling never finds less than the exact minimum, and (unless a cell is only
+    // clipped between two samples) comes within the change of z over a step.
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    let mut close = 0;
+    for _ in 0..400 {
+        let a = Vec3::new(rng.random_range(90.0..150.0), rng.random_range(190.0..270.0), rng.random_range(-30.0..0.0));
+        let b = Vec3::new(rng.random_range(90.0..150.0), rng.random_range(190.0..270.0), rng.random_range(-30.0..0.0));
+        let m = hit(a, b);
+        let n = 20_000;
+        let sampled = (0..=n)
+            .map(|k| {
+                let p = a + (b - a) * (k as f64 / n as f64);
+                p.z - t.elevation(p.x, p.y)
+            })
+            .fold(f64::INFINITY, f64::min);
+        assert!(m <= sampled + 1e-9, "exact {m} above sampled {sampled} for {a} -> {b}");
+        if sampled - m <= (b.z - a.z).abs() * 2.0 / n as f64 + 1e-9 {
+            close += 1;
+        }
+    }
+    assert!(close >= 380, "only {close} of 400 agree with sampling");
+}
