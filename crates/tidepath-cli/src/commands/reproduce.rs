@@ -20,6 +20,11 @@ pub struct ReproduceArgs {
     /// Parallel runs (default: all cores). Results do not depend on it.
     #[arg(long)]
     pub jobs: Option<usize>,
+    /// Reference planner of experiments on scenarios, for the gap column (default: visibility
+    /// where it applies, else theta-star; `none` for no reference). Benchmark-function
+    /// experiments have a known optimum instead.
+    #[arg(long)]
+    pub reference: Option<String>,
     /// Output folder for REPORT.md, per-experiment results and figures.
     #[arg(long, default_value = "reproduce")]
     pub out: PathBuf,
@@ -33,7 +38,15 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
         return Ok(Outcome::Success);
     }
     let paper = paper(&args.paper)?;
-    let opts = ReproduceOptions { runs: args.runs, master_seed: args.seed, jobs: crate::jobs(args.jobs)? };
+    if let Some(id) = args.reference.as_deref().filter(|id| *id != "none") {
+        tidepath::planner::registry().get(id).map_err(|e| Error::input("--reference", e.to_string()))?;
+    }
+    let opts = ReproduceOptions {
+        runs: args.runs,
+        master_seed: args.seed,
+        jobs: crate::jobs(args.jobs)?,
+        reference: args.reference.clone(),
+    };
     let bar = std::sync::Mutex::new(None::<RunsBar>);
     let outcomes = reproduce(
         paper,

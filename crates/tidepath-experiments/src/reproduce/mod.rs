@@ -21,6 +21,20 @@ pub struct ReproduceOptions {
     pub runs: u64,
     pub master_seed: u64,
     pub jobs: usize,
+    /// The reference planner of experiments on scenarios (their gap column): `None` for each
+    /// scenario's default ([`super::compare::default_reference`]), `Some("none")` for none.
+    pub reference: Option<String>,
+}
+
+impl ReproduceOptions {
+    /// The reference planner an experiment on `scenario` runs, if any.
+    pub fn reference_for(&self, scenario: &tidepath::scenario::Scenario) -> Option<String> {
+        match self.reference.as_deref() {
+            None => Some(super::compare::default_reference(scenario).to_string()),
+            Some("none") => None,
+            Some(id) => Some(id.to_string()),
+        }
+    }
 }
 
 /// One experiment of a paper, after running it.

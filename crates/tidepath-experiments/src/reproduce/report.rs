@@ -104,12 +104,15 @@ pub(super) fn write(
              \"×10\" says whether our mean is within a factor of 10 of the paper's.\n",
             o.paper.source, o.comparison.runs
         );
+        let _ = writeln!(md, "{}\n", reference_line(&o.comparison));
+        let gap = o.comparison.reference.is_some();
         let reference = o.comparison.planners.first().cloned().unwrap_or_default();
         let _ = writeln!(
             md,
-            "| problem | planner | best paper | best ours | mean paper | mean ours | ×10 | std paper | std ours | \"0\" paper | \"0\" ours | vs {reference} |"
+            "| problem | planner | best paper | best ours | mean paper | mean ours | ×10 | std paper | std ours | \"0\" paper | \"0\" ours | vs {reference} |{}",
+            if gap { " gap % (best / mean) |" } else { "" }
         );
-        let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|---|---|---|");
+        let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|---|---|---|{}", if gap { "---|" } else { "" });
         for row in &o.comparison.rows {
             let cell = o.paper.cell(&row.problem, &row.planner);
             let mag = match cell.and_then(|c| c.mean) {
@@ -138,6 +141,11 @@ pub(super) fn write(
                 row.zeros_tiny,
                 mark
             );
+            if gap {
+                md.pop();
+                let g = |v: Option<f64>| v.map_or("—".into(), |v| format!("{v:+.2}"));
+                let _ = writeln!(md, " {} / {} |", g(row.best_gap_percent), g(row.gap_percent));
+            }
         }
         if !o.notes.is_empty() {
             let _ = writeln!(md, "\n### Findings\n");
@@ -163,6 +171,22 @@ pub(super) fn write(
     out.commit()
 }
 
+/// One line saying what the gap column measures against, or why there is none.
+fn reference_line(c: &crate::compare::Comparison) -> String {
+    match (&c.reference, c.kind.as_str()) {
+        (Some(r), _) => format!(
+            "Gap to a reference: {} ({}, run once with its defaults), cost {}; gap % = 100 (cost - reference) / reference.",
+            r.planner,
+            r.status,
+            num(r.cost)
+        ),
+        (None, "functions") => "Gap to a reference: none applies; benchmark functions have a known optimum, f = 0, \
+             and the \"0\" columns count the runs that reach it."
+            .into(),
+        (None, _) => "Gap to a reference: none (no reference was asked for, or it found no feasible plan).".into(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -174,5 +198,55 @@ mod tests {
         assert!(same_magnitude(0.0, 0.0));
         assert!(!same_magnitude(0.0, 1e-20));
         assert!(!same_magnitude(-1.0, 1.0));
+    }
+
+    /// An experiment on a scenario gets the gap column and says what it measures against; a
+    /// benchmark-function experiment says why none applies.
+    #[test]
+    fn scenario_experiments_report_the_gap_to_their_reference() {
+        use crate::compare::{compare_scenario, RunBudget};
+        let scenario = tidepath::scenario::load("headland").unwrap();
+        let opts = ReproduceOptions { runs: 2, master_seed: 3, jobs: 1, reference: None };
+        assert_eq!(opts.reference_for(&scenario).as_deref(), Some("visibility"));
+        let none = ReproduceOptions { reference: Some("none".into()), ..opts.clone() };
+        assert_eq!(none.reference_for(&scenario), None);
+        let reference = opts.reference_for(&scenario);
+        let c = compare_scenario(
+            &scenario,
+            &["astar".to_string(), "theta-star".to_string()],
+            2,
+            3,
+            &RunBudget::default(),
+            1,
+            reference.as_deref(),
+            &|_| {},
+        )
+        .unwrap();
+        assert!(c.reference.is_some(), "visibility plans headland");
+        let outcome = |c: crate::compare::Comparison| ExperimentOutcome {
+            id: "headland".into(),
+            title: "Grid planners on headland".into(),
+            setup: "two runs".into(),
+            comparison: c,
+            paper: PaperTable::default(),
+            claims: Vec::new(),
+            notes: Vec::new(),
+        };
+        let paper = Paper { id: "test", title: "test", run: |_, _| Ok(Vec::new()) };
+        let dir = tempfile::tempdir().unwrap();
+        write(&paper, &opts, &[outcome(c.clone())], dir.path(), &output::NoFigures).unwrap();
+        let md = std::fs::read_to_string(dir.path().join("REPORT.md")).unwrap();
+        assert!(md.contains("Gap to a reference: visibility ("), "{md}");
+        assert!(md.contains("gap % (best / mean) |"), "{md}");
+        // Grid paths are never shorter than the visibility graph's: A*'s gap is at least 0.
+        let astar = md.lines().find(|l| l.starts_with("| headland | astar |")).unwrap();
+        let gap = astar.rsplit('|').nth(1).unwrap().trim();
+        assert!(!gap.starts_with('-') && gap.contains(" / +"), "{astar}");
+        let mut f = c;
+        f.kind = "functions".into();
+        f.reference = None;
+        write(&paper, &opts, &[outcome(f)], dir.path(), &output::NoFigures).unwrap();
+        let md = std::fs::read_to_string(dir.path().join("REPORT.md")).unwrap();
+        assert!(md.contains("none applies") && !md.contains("gap %"), "{md}");
     }
 }
