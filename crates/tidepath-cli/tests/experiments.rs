@@ -64,6 +64,23 @@ fn compare_rejects_unknown_planner_before_running() {
     assert!(!out.exists());
 }
 
+/// An unknown reference planner is named against the flag, in one line, before any run.
+#[test]
+fn unknown_reference_planners_are_refused_naming_the_flag() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o");
+    for args in [
+        vec!["compare", "demo", "--planners", "pso", "--reference", "nope", "--out", out.to_str().unwrap()],
+        vec!["reproduce", "baselines", "--reference", "nope", "--out", out.to_str().unwrap()],
+    ] {
+        let o = tidepath(&args);
+        assert_eq!(o.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.starts_with("error: --reference: unknown planner 'nope'") && err.lines().count() == 1, "{err}");
+        assert!(!out.exists());
+    }
+}
+
 #[test]
 fn bench_functions_reports_sphere_near_zero() {
     let o = tidepath(&[

@@ -24,6 +24,14 @@ impl Error {
         Error::Input { field: field.into(), message: message.into() }
     }
 
+    /// The same error, naming `field` instead (e.g. a CLI flag for a scenario field).
+    pub fn for_field(self, field: impl Into<String>) -> Self {
+        match self {
+            Error::Input { message, .. } => Error::Input { field: field.into(), message },
+            other => other,
+        }
+    }
+
     pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
         Error::Io { path: path.into(), source }
     }

@@ -48,7 +48,7 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     let reference = match args.reference.as_deref() {
         Some("none") => None,
         Some(id) => {
-            tidepath::planner::registry().get(id).map_err(|e| Error::input("--reference", e.to_string()))?;
+            tidepath::planner::registry().get(id).map_err(|e| e.for_field("--reference"))?;
             Some(id.to_string())
         }
         None => Some(default_reference(&scenario).to_string()),

@@ -114,7 +114,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     if let Some(id) = &args.reference {
         let r = PlanRequest { planner: Some(id.clone()), seed: args.run.seed, init: None, ..req.clone() };
         let r = PlanRequest { iterations: None, evaluations: None, population: None, smoother: None, ..r };
-        let reference = scenario.plan(&r, &mut |_| {}).map_err(|e| Error::input("--reference", e.to_string()))?;
+        let reference = scenario.plan(&r, &mut |_| {}).map_err(|e| e.for_field("--reference"))?;
         match (reference.status.is_success(), reference.cost, report.cost) {
             (true, Some(rc), Some(c)) => {
                 let pct = |a: Option<f64>, b: Option<f64>| match (a, b) {

@@ -39,7 +39,7 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
     }
     let paper = paper(&args.paper)?;
     if let Some(id) = args.reference.as_deref().filter(|id| *id != "none") {
-        tidepath::planner::registry().get(id).map_err(|e| Error::input("--reference", e.to_string()))?;
+        tidepath::planner::registry().get(id).map_err(|e| e.for_field("--reference"))?;
     }
     let opts = ReproduceOptions {
         runs: args.runs,
