@@ -33,11 +33,11 @@ pub struct ReproduceArgs {
 pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
     if args.paper == "list" {
         for p in PAPERS {
-            println!("{:<12} {}", p.id, p.title);
+            println!("{:<12} {} [{}]", p.id, p.description, p.citation);
         }
         return Ok(Outcome::Success);
     }
-    let paper = paper(&args.paper)?;
+    let paper = &paper(&args.paper)?;
     if let Some(id) = args.reference.as_deref().filter(|id| *id != "none") {
         tidepath::planner::registry().get(id).map_err(|e| e.for_field("--reference"))?;
     }

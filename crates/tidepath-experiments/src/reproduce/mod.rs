@@ -14,6 +14,7 @@ use std::path::Path;
 
 use super::compare::Comparison;
 use tidepath::error::{Error, Result};
+use tidepath::registry::{no_params, Entry, Registry};
 
 /// Options shared by every reproduction.
 #[derive(Clone, Debug)]
@@ -57,26 +58,28 @@ pub type ProgressFn<'a> = dyn Fn(usize, usize) + Sync + 'a;
 /// Runs every experiment of a paper.
 pub type RunPaper = fn(&ReproduceOptions, &ProgressFn<'_>) -> Result<Vec<ExperimentOutcome>>;
 
-/// A registered paper.
-pub struct Paper {
-    pub id: &'static str,
-    pub title: &'static str,
-    pub run: RunPaper,
-}
+/// A registered reproduction: an entry of the one registry type every kind uses; `build` runs
+/// its experiments.
+pub type Paper = Entry<RunPaper>;
 
-pub const PAPERS: &[Paper] = &[Paper {
+/// The reproduction table: adding a paper's reproduction is a file plus one line here.
+pub const PAPERS: &[Paper] = &[Entry {
     id: "baselines",
-    title: "PSO and GA (DE and a second GA reading for reference) on amfa2015's benchmark functions, Tables 2 and 4",
-    run: baselines::run,
+    description:
+        "PSO and GA (DE and a second GA reading for reference) on amfa2015's benchmark functions, Tables 2 and 4",
+    citation: "Liu et al. 2015 (amfa2015), Tables 1-4",
+    params: &[],
+    defaults: no_params,
+    build: baselines::run,
 }];
 
-pub fn paper(id: &str) -> Result<&'static Paper> {
-    PAPERS.iter().find(|p| p.id == id).ok_or_else(|| {
-        Error::input(
-            "PAPER",
-            format!("unknown paper '{id}' (known: {})", PAPERS.iter().map(|p| p.id).collect::<Vec<_>>().join(", ")),
-        )
-    })
+/// The reproductions as a registry: lists, "known: ..." errors.
+pub fn papers() -> Registry<RunPaper> {
+    Registry::new("reproduction", "PAPER", "tidepath reproduce list", PAPERS)
+}
+
+pub fn paper(id: &str) -> Result<Paper> {
+    papers().get(id).copied()
 }
 
 /// Runs `paper` and writes DIR/REPORT.md, per-experiment results and figures.
@@ -90,7 +93,22 @@ pub fn reproduce(
     if opts.runs < 2 {
         return Err(Error::input("--runs", format!("needs at least 2 runs for statistics, got {}", opts.runs)));
     }
-    let outcomes = (paper.run)(opts, progress)?;
+    let outcomes = (paper.build)(opts, progress)?;
     super::output::in_output_dir("--out", dir, || report::write(paper, opts, &outcomes, dir, figures))?;
     Ok(outcomes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_reproduction_table_is_a_registry() {
+        for p in papers().entries() {
+            assert!(!p.description.is_empty() && !p.citation.is_empty(), "{}", p.id);
+            assert_eq!(paper(p.id).unwrap().id, p.id);
+        }
+        let e = paper("nope").unwrap_err().to_string();
+        assert!(e.starts_with("PAPER: unknown reproduction 'nope' (known: baselines"), "{e}");
+    }
 }
