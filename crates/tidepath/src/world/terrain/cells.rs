@@ -100,6 +100,9 @@ impl CellGrid {
     }
 
     fn fold(&self, (i0, i1): (usize, usize), (j0, j1): (usize, usize), init: f64, f: fn(f64, f64) -> f64) -> f64 {
+        // NaN coordinates (a hostile input) must not reverse a range.
+        let (i0, i1) = (i0.min(i1), i0.max(i1));
+        let (j0, j1) = (j0.min(j1), j0.max(j1));
         let mut m = init;
         for j in j0..=j1 {
             for &v in &self.z[j * self.nx + i0..=j * self.nx + i1] {
@@ -118,8 +121,8 @@ impl CellGrid {
     /// The exact maximum over the closed rectangle (x0 <= x1, y0 <= y1) where it spans at most
     /// a few thousand cells, else the grid's highest cell.
     pub fn max_in(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
-        let (fx0, fy0) = self.units(x0, y0);
-        let (fx1, fy1) = self.units(x1, y1);
+        let (fx0, fy0) = self.units(x0.min(x1), y0.min(y1));
+        let (fx1, fy1) = self.units(x0.max(x1), y0.max(y1));
         let (ci, cj) = (Self::meeting_interior(fx0, fx1, self.nx), Self::meeting_interior(fy0, fy1, self.ny));
         // A point or a line: an upper bound from every cell holding it.
         let (ci, cj) = if fx1 - fx0 <= EDGE_TOL || fy1 - fy0 <= EDGE_TOL {
@@ -136,8 +139,8 @@ impl CellGrid {
     /// The exact minimum over the closed rectangle: every cell whose closure meets it counts,
     /// since its edges take the lowest neighbouring value.
     pub fn min_in(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
-        let (fx0, fy0) = self.units(x0, y0);
-        let (fx1, fy1) = self.units(x1, y1);
+        let (fx0, fy0) = self.units(x0.min(x1), y0.min(y1));
+        let (fx1, fy1) = self.units(x0.max(x1), y0.max(y1));
         let (ci, cj) = (Self::meeting_closure(fx0, fx1, self.nx), Self::meeting_closure(fy0, fy1, self.ny));
         if (ci.1 - ci.0 + 1) * (cj.1 - cj.0 + 1) > SCAN_LIMIT {
             return self.z_min;

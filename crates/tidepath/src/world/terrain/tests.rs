@@ -280,3 +280,16 @@ fn cells_clearance_along_segments_is_exact() {
     }
     assert!(close >= 380, "only {close} of 400 agree with sampling");
 }
+
+#[test]
+fn cells_take_reversed_and_nan_rectangles_without_panic() {
+    let t = cell_map();
+    assert_eq!(t.max_elevation_in(129.0, 239.0, 111.0, 221.0), 5.0);
+    assert_eq!(t.min_elevation_in(129.0, 239.0, 110.0, 221.0), -30.0);
+    for v in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let _ = t.max_elevation_in(v, 0.0, 1.0, v);
+        let _ = t.min_elevation_in(0.0, v, v, 1.0);
+        let _ = t.elevation(v, v);
+        let _ = t.exact_min_clearance(Vec3::new(v, 0.0, -1.0), Vec3::new(1.0, v, -1.0), 0.0, 1.0);
+    }
+}
