@@ -247,7 +247,15 @@ fn every_subcommand_has_help() {
 #[test]
 fn listings_show_the_demo_and_the_planners() {
     let s = String::from_utf8(tidepath(&["scenarios"], &[]).stdout).unwrap();
-    assert!(s.lines().any(|l| l.starts_with("demo")));
+    // Every built-in, with the descriptions in one column however long the ids.
+    let column: Vec<usize> = tidepath::scenario::BUILTIN
+        .iter()
+        .map(|e| {
+            let line = s.lines().find(|l| l.split_whitespace().next() == Some(e.id)).expect(e.id);
+            line.find(e.description).expect(e.description)
+        })
+        .collect();
+    assert!(column.windows(2).all(|w| w[0] == w[1]), "{s}");
     let p = String::from_utf8(tidepath(&["planners"], &[]).stdout).unwrap();
     for e in tidepath::planner::PLANNERS {
         assert!(p.lines().any(|l| l.trim_start().starts_with(e.id)), "{} missing from {p}", e.id);

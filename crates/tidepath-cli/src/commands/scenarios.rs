@@ -11,8 +11,9 @@ pub struct ShowArgs {
 }
 
 pub fn list() -> Result<Outcome, Error> {
+    let width = BUILTIN.iter().map(|e| e.id.len()).max().unwrap_or(0);
     for e in BUILTIN {
-        println!("{:<12} {} [{}]", e.id, e.description, e.citation);
+        println!("{:<width$}  {} [{}]", e.id, e.description, e.citation);
     }
     Ok(Outcome::Success)
 }
