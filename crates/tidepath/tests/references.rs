@@ -297,3 +297,42 @@ fn cape_flattery_route_is_reliable_with_the_default_planner() {
     }
     assert!(feasible >= 9, "only {feasible} of 10 runs feasible");
 }
+
+/// In 3-D the grid planners leave out edges steeper than the vehicle's pitch limit: a dive of
+/// 80 m over 100 m (39 degrees) with a 20 degree limit comes out as a path whose every
+/// segment is within the limit, so the plan is feasible (before, pure vertical moves broke it).
+#[test]
+fn grid_planners_keep_to_the_pitch_limit() {
+    let text = r#"
+name = "dive"
+[world]
+dimensions = 3
+bounds = { min = [0.0, 0.0, -100.0], max = [1000.0, 1000.0, 0.0] }
+[vehicle]
+speed = 1.5
+max_turn_deg = 180.0
+max_pitch_deg = 20.0
+depth_min = 0.0
+depth_max = 100.0
+safety_distance = 1.0
+[mission]
+start = [450.0, 500.0, -10.0]
+goal = [550.0, 500.0, -90.0]
+"#;
+    let s = Scenario::from_toml(text, "dive.toml").unwrap();
+    let steep = s.evaluate(&[s.missions[0].start, s.missions[0].goal]).unwrap();
+    assert!(steep.violations.iter().any(|v| v.message.contains("pitch")), "{:?}", steep.violations);
+    for planner in ["astar", "theta-star"] {
+        let r = s.plan(&PlanRequest { planner: Some(planner.into()), ..PlanRequest::default() }, &mut |_| {}).unwrap();
+        assert!(r.status.is_success(), "{planner}: {}", r.reason);
+        let pts = r.missions[0].points();
+        for w in pts.windows(2) {
+            let d = w[1] - w[0];
+            let h = d.truncate().length();
+            assert!(d.z.abs() <= 20f64.to_radians().tan() * h + 1e-9, "{planner}: {w:?}");
+        }
+        // At least the horizontal run the dive needs: 80 m / tan 20 degrees.
+        let horizontal: f64 = pts.windows(2).map(|w| (w[1] - w[0]).truncate().length()).sum();
+        assert!(horizontal >= 80.0 / 20f64.to_radians().tan() - 1e-6, "{planner}: {horizontal}");
+    }
+}

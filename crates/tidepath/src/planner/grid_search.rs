@@ -186,9 +186,16 @@ impl GridSearch {
                 r.centre(c)
             }
         };
+        // The pitch limit is a property of each segment, so edges steeper than it are left out
+        // of the graph (pure vertical moves among them, in 3-D), rather than found on the path.
+        let tan_pitch = m.vehicle.max_pitch.tan();
         let edge = |a: usize, b: usize, g_from: f64| -> Option<f64> {
             let t0 = if time { m.departure_time + g_from } else { m.departure_time + g_from / v };
             let (pa, pb) = (pos(a), pos(b));
+            let d = pb - pa;
+            if r.three_d && d.z != 0.0 && d.z.abs() > tan_pitch * d.truncate().length() {
+                return None;
+            }
             let check = validator.motion(pa, pb, t0);
             if !check.valid() {
                 return None;
