@@ -317,22 +317,40 @@ impl<'a> Validator<'a> {
         let (arrival, blocked) = if moving.is_empty() {
             self.for_each_piece(a, b, t0, |_| {})
         } else {
-            let mut hit = [0u64; MAX_TRACKED_MOVING / 64];
-            self.for_each_piece(a, b, t0, |pc| {
-                for (j, &k) in moving.iter().enumerate() {
-                    let tracked = j < MAX_TRACKED_MOVING;
-                    if tracked && hit[j / 64] & (1 << (j % 64)) != 0 {
-                        continue;
-                    }
-                    if world.obstacles[k as usize].segment_hits(pc.p0, pc.p1, pc.t0, pc.t1, safety) {
-                        if tracked {
-                            hit[j / 64] |= 1 << (j % 64);
-                        }
-                        out.collisions += 1;
-                        report(&mut out, MotionIssue::Obstacle(k as usize));
-                    }
+            // The clock first; then a box test over the whole motion clears most moving
+            // obstacles at once, and only if one remains are the pieces walked again (the
+            // same pieces, at the same times) to test those piece by piece.
+            let (arrival, blocked) = self.for_each_piece(a, b, t0, |_| {});
+            let (lo, hi) = (a.min(b) - Vec3::splat(safety), a.max(b) + Vec3::splat(safety));
+            // Bit j set: moving obstacle j cannot come near (tracked ones only).
+            let mut clear = [0u64; MAX_TRACKED_MOVING / 64];
+            let mut near = false;
+            for (j, &k) in moving.iter().enumerate() {
+                if world.obstacles[k as usize].may_come_within(lo, hi, t0, arrival) {
+                    near = true;
+                } else if j < MAX_TRACKED_MOVING {
+                    clear[j / 64] |= 1 << (j % 64);
                 }
-            })
+            }
+            if near {
+                self.for_each_piece(a, b, t0, |pc| {
+                    for (j, &k) in moving.iter().enumerate() {
+                        let tracked = j < MAX_TRACKED_MOVING;
+                        if tracked && clear[j / 64] & (1 << (j % 64)) != 0 {
+                            continue;
+                        }
+                        if world.obstacles[k as usize].segment_hits(pc.p0, pc.p1, pc.t0, pc.t1, safety) {
+                            // Counted once: a hit obstacle joins the cleared ones.
+                            if tracked {
+                                clear[j / 64] |= 1 << (j % 64);
+                            }
+                            out.collisions += 1;
+                            report(&mut out, MotionIssue::Obstacle(k as usize));
+                        }
+                    }
+                });
+            }
+            (arrival, blocked)
         };
         out.arrival = arrival;
         out.blocked = blocked;

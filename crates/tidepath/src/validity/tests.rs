@@ -92,8 +92,17 @@ fn uniform_current_time_is_the_crab_closed_form() {
 /// second brings the vehicle to the far half early. A sphere moving across the track is met
 /// there at the piecewise clock; a constant-speed clock over the whole segment would put the
 /// vehicle elsewhere at that time and call the motion clear.
+///
+/// Motions of up to 32 pieces keep their pieces and test each obstacle after a box test over
+/// the whole motion; longer ones are walked twice. Both are checked (20 and 100 pieces).
 #[test]
 fn moving_obstacles_are_tested_at_the_vehicle_clock() {
+    for step in [50.0, 10.0] {
+        moving_obstacle_met_at_the_vehicle_clock(step);
+    }
+}
+
+fn moving_obstacle_met_at_the_vehicle_clock(step: f64) {
     let mut w = World::open(Aabb::new(Vec3::new(0.0, -500.0, -100.0), Vec3::new(1000.0, 500.0, 0.0)));
     // u = 2 m/s (following) for x < 500, 0 beyond, constant in time; v = 2 m/s.
     let grid = RegularGrid2::new(0.0, -500.0, 500.0, 1000.0, 3, 2, "g").unwrap();
@@ -102,7 +111,7 @@ fn moving_obstacles_are_tested_at_the_vehicle_clock() {
     w.current = Current::Grid(CurrentGrid::new(grid, vec![0.0], u, vv, "g").unwrap());
     let (a, b) = (Vec3::new(0.0, 0.0, -50.0), Vec3::new(1000.0, 0.0, -50.0));
     let v = Vehicle { speed: 2.0, safety_distance: 1.0, ..Vehicle::default() };
-    let s = ModelSettings { current_step: 10.0, ..ModelSettings::default() };
+    let s = ModelSettings { current_step: step, ..ModelSettings::default() };
     let clear = Validator::new(&w, &v, &s);
     let at = |t: f64| {
         let mut p = a;
@@ -125,14 +134,35 @@ fn moving_obstacles_are_tested_at_the_vehicle_clock() {
         .push(Obstacle { shape: Shape::Sphere { center: centre0, radius: 3.0 }, velocity: Vec3::new(0.0, speed, 0.0) });
     let val = Validator::new(&w, &v, &s);
     let m = val.motion(a, b, 0.0);
-    assert_eq!(m.first, Some(MotionIssue::Obstacle(0)));
+    assert_eq!((m.first, m.collisions), (Some(MotionIssue::Obstacle(0)), 1), "step {step}");
     assert!(val.motion_clearance(a, b, 0.0) < 1e-6);
+    // Moved 100 m further along its way, it crosses the track long after the vehicle passed.
+    let mut late = w.clone();
+    late.obstacles[0].shape = Shape::Sphere { center: centre0 - Vec3::new(0.0, 100.0, 0.0), radius: 3.0 };
+    assert!(Validator::new(&late, &v, &s).motion(a, b, 0.0).valid(), "step {step}");
     // The constant-speed reading of the whole segment misses it.
     assert!(!w.obstacles[0].segment_hits(a, b, 0.0, t_total, 1.0));
 }
 
 /// A forecast node without data makes the cells around it unusable: states there are invalid
-/// and motions through them are refused, counted per piece, while motions elsewhere pass.
+/// and motions through them are refused, once per motion, while motions elsewhere pass.
+/// The swept box of a moving obstacle, by hand: a unit cube at the origin moving at 1 m/s in
+/// x covers x in [-1 + t0, 1 + t1] over [t0, t1].
+#[test]
+fn moving_obstacle_box_test_covers_its_sweep() {
+    let o = Obstacle { shape: Shape::Box { min: Vec3::splat(-1.0), max: Vec3::splat(1.0) }, velocity: Vec3::X };
+    let probe = |x: f64| (Vec3::new(x, -0.5, -0.5), Vec3::new(x + 0.1, 0.5, 0.5));
+    let (lo, hi) = probe(5.5);
+    assert!(o.may_come_within(lo, hi, 0.0, 5.0)); // reaches x = 6
+    assert!(!o.may_come_within(lo, hi, 0.0, 4.0)); // reaches x = 5 only
+    assert!(!o.may_come_within(lo, hi, 7.0, 9.0)); // already past: x in [6, 10]
+    let (lo, hi) = probe(-3.0);
+    assert!(!o.may_come_within(lo, hi, 0.0, 10.0)); // behind it
+    assert!(o.may_come_within(lo, hi, -3.0, 0.0)); // it came from there
+    assert!(o.may_come_within(lo, hi, f64::NAN, 1.0)); // undefined times keep the exact test
+    assert!(o.may_come_within(lo, hi, 0.0, f64::INFINITY));
+}
+
 #[test]
 fn current_gaps_refuse_states_and_motions_that_need_them() {
     let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -100.0), Vec3::new(400.0, 400.0, 0.0)));

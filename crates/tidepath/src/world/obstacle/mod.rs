@@ -84,6 +84,27 @@ impl Obstacle {
         !(d >= margin && d > 0.0)
     }
 
+    /// Whether the obstacle's box can meet the box `lo`..`hi` at some time in [t0, t1]: its
+    /// box at time 0 moved by every displacement it makes over the interval (a box test,
+    /// conservative: `false` proves it stays clear).
+    #[inline]
+    pub fn may_come_within(&self, lo: Vec3, hi: Vec3, t0: f64, t1: f64) -> bool {
+        // Undefined times keep the caller on the exact test (which treats them as hits); so
+        // does NaN anywhere below, through `!(x > y)`. (`min`/`max` would drop a NaN.)
+        if !(t0.is_finite() && t1.is_finite()) {
+            return true;
+        }
+        let (min, max) = self.shape.bounds();
+        let (d0, d1) = (self.velocity * t0, self.velocity * t1);
+        let (swept_lo, swept_hi) = (min + d0.min(d1), max + d0.max(d1));
+        !(swept_lo.x > hi.x
+            || swept_lo.y > hi.y
+            || swept_lo.z > hi.z
+            || lo.x > swept_hi.x
+            || lo.y > swept_hi.y
+            || lo.z > swept_hi.z)
+    }
+
     /// Does the segment a -> b, traversed from time `ta` to `tb`, come closer than `margin`
     /// to the obstacle? Exact (up to floating point).
     ///
