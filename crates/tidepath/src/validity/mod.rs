@@ -325,8 +325,8 @@ impl<'a> Validator<'a> {
             // Bit j set: moving obstacle j cannot come near (tracked ones only).
             let mut clear = [0u64; MAX_TRACKED_MOVING / 64];
             let mut near = false;
-            for (j, &k) in moving.iter().enumerate() {
-                if world.obstacles[k as usize].may_come_within(lo, hi, t0, arrival) {
+            for j in 0..moving.len() {
+                if self.obstacles.moving_may_come_within(j, lo, hi, t0, arrival) {
                     near = true;
                 } else if j < MAX_TRACKED_MOVING {
                     clear[j / 64] |= 1 << (j % 64);

@@ -20,6 +20,9 @@ pub(crate) struct ObstacleIndex {
     always: Vec<u32>,
     /// Moving obstacles, in increasing index.
     moving: Vec<u32>,
+    /// Per moving obstacle (same order): its box at time 0 and its velocity, for the box test
+    /// over a whole motion without going through the shape.
+    moving_boxes: Vec<(Vec3, Vec3, Vec3)>,
     x0: f64,
     y0: f64,
     inv_w: f64,
@@ -37,8 +40,16 @@ impl ObstacleIndex {
         let n = world.obstacles.len();
         let fixed: Vec<usize> = (0..n).filter(|&k| world.obstacles[k].velocity == Vec3::ZERO).collect();
         let moving: Vec<u32> = (0..n as u32).filter(|&k| world.obstacles[k as usize].velocity != Vec3::ZERO).collect();
+        let moving_boxes = moving
+            .iter()
+            .map(|&k| {
+                let o = &world.obstacles[k as usize];
+                let b = o.shape.aabb();
+                (b.min, b.max, o.velocity)
+            })
+            .collect();
         if fixed.len() < MIN_INDEXED || n > MAX_INDEXED {
-            return Self { always: fixed.iter().map(|&k| k as u32).collect(), moving, ..Self::default() };
+            return Self { always: fixed.iter().map(|&k| k as u32).collect(), moving, moving_boxes, ..Self::default() };
         }
         let b = world.bounds;
         let side = ((fixed.len() as f64).sqrt() * 2.0).ceil().clamp(2.0, 32.0) as usize;
@@ -51,6 +62,7 @@ impl ObstacleIndex {
         let mut index = Self {
             always: Vec::new(),
             moving,
+            moving_boxes,
             x0: b.min.x,
             y0: b.min.y,
             inv_w: nx as f64 / w,
@@ -99,6 +111,14 @@ impl ObstacleIndex {
     #[inline]
     pub(crate) fn moving(&self) -> &[u32] {
         &self.moving
+    }
+
+    /// Whether the `j`-th moving obstacle, swept over [t0, t1], may meet the box `lo`..`hi`
+    /// ([`crate::world::obstacle::swept_box_meets`] on the stored box).
+    #[inline]
+    pub(crate) fn moving_may_come_within(&self, j: usize, lo: Vec3, hi: Vec3, t0: f64, t1: f64) -> bool {
+        let (min, max, v) = self.moving_boxes[j];
+        crate::world::obstacle::swept_box_meets(min, max, v, lo, hi, t0, t1)
     }
 
     /// Calls `f(k)` once for every fixed obstacle k that may come near segment a-b: all of them

@@ -89,20 +89,8 @@ impl Obstacle {
     /// conservative: `false` proves it stays clear).
     #[inline]
     pub fn may_come_within(&self, lo: Vec3, hi: Vec3, t0: f64, t1: f64) -> bool {
-        // Undefined times keep the caller on the exact test (which treats them as hits); so
-        // does NaN anywhere below, through `!(x > y)`. (`min`/`max` would drop a NaN.)
-        if !(t0.is_finite() && t1.is_finite()) {
-            return true;
-        }
         let (min, max) = self.shape.bounds();
-        let (d0, d1) = (self.velocity * t0, self.velocity * t1);
-        let (swept_lo, swept_hi) = (min + d0.min(d1), max + d0.max(d1));
-        !(swept_lo.x > hi.x
-            || swept_lo.y > hi.y
-            || swept_lo.z > hi.z
-            || lo.x > swept_hi.x
-            || lo.y > swept_hi.y
-            || lo.z > swept_hi.z)
+        swept_box_meets(min, max, self.velocity, lo, hi, t0, t1)
     }
 
     /// Does the segment a -> b, traversed from time `ta` to `tb`, come closer than `margin`
@@ -148,6 +136,25 @@ impl Obstacle {
             None
         }
     }
+}
+
+/// Whether the box `min`..`max` moving at `velocity` (at its place at time 0) meets the box
+/// `lo`..`hi` at some time in [t0, t1]. Conservative: `false` proves they stay apart.
+/// Undefined times keep the caller on its exact test (which treats them as hits); so does NaN
+/// anywhere, through `!(x > y)` (`min` and `max` alone would drop a NaN).
+#[inline]
+pub fn swept_box_meets(min: Vec3, max: Vec3, velocity: Vec3, lo: Vec3, hi: Vec3, t0: f64, t1: f64) -> bool {
+    if !(t0.is_finite() && t1.is_finite()) {
+        return true;
+    }
+    let (d0, d1) = (velocity * t0, velocity * t1);
+    let (swept_lo, swept_hi) = (min + d0.min(d1), max + d0.max(d1));
+    !(swept_lo.x > hi.x
+        || swept_lo.y > hi.y
+        || swept_lo.z > hi.z
+        || lo.x > swept_hi.x
+        || lo.y > swept_hi.y
+        || lo.z > swept_hi.z)
 }
 
 impl Shape {
