@@ -79,6 +79,24 @@ impl GeoFrame {
         (normalise_lon(lon), lat)
     }
 
+    /// The point (`x`, `y`) in degrees for messages: "48.3812 N, 123.2101 W".
+    pub fn place(&self, x: f64, y: f64) -> String {
+        let (lon, lat) = self.inverse(x, y);
+        let ns = if lat >= 0.0 { "N" } else { "S" };
+        let ew = if lon >= 0.0 { "E" } else { "W" };
+        format!("{:.4} {ns}, {:.4} {ew}", lat.abs(), lon.abs())
+    }
+
+    /// A horizontal vector given east and north at the point (`lon`, `lat`), which the frame
+    /// puts at (`x`, `y`), in the frame's x and y: they differ by the meridian convergence, the
+    /// angle of local north on the map, 0 at the origin and growing away from it.
+    pub fn east_north_to_xy(&self, (lon, lat): (f64, f64), (x, y): (f64, f64), east: f64, north: f64) -> (f64, f64) {
+        let up = self.forward(lon, (lat + 1e-3).min(90.0), "vector").map(|(x2, y2)| (x2 - x, y2 - y));
+        let angle = up.map(|(dx, dy)| dx.atan2(dy)).unwrap_or(0.0);
+        let (s, c) = angle.sin_cos();
+        (east * c + north * s, -east * s + north * c)
+    }
+
     /// The geodesic distance in metres between two points given in degrees.
     pub fn geodesic_distance(&self, (lon1, lat1): (f64, f64), (lon2, lat2): (f64, f64)) -> f64 {
         self.geodesic.inverse(lat1, lon1, lat2, lon2)

@@ -274,22 +274,81 @@ fn data_file(path: &str, source: &str, field: &str) -> Result<DataFile> {
     Ok(DataFile::Path(full))
 }
 
-/// The geographic grid's values resampled onto a metric grid over `lo`..`hi`, leaving out
-/// corners without data ([`GeoGrid::sample_valid`]), `NaN` where none has data (returned as
-/// a grid spec).
-fn resample_values(
-    g: &GeoGrid,
-    frame: &GeoFrame,
-    lo: [f64; 2],
-    hi: [f64; 2],
-    resolution: Option<f64>,
-    field: &str,
-    warnings: &mut Vec<String>,
-) -> Result<TerrainSpec> {
-    resample_with(g, frame, lo, hi, resolution, field, warnings, f64::NAN)
+/// A regular metric grid over `lo`..`hi` and where each of its nodes lies in degrees: found
+/// once per data file and used for every layer resampled onto it (bathymetry, or each time
+/// step of u and v), since the geodesic computations are the costly part.
+struct MetricGrid {
+    origin: [f64; 2],
+    spacing: [f64; 2],
+    shape: [usize; 2],
+    /// (lon, lat) of each node, row-major.
+    lonlat: Vec<(f64, f64)>,
 }
 
-/// The geographic grid resampled onto a metric grid over `lo`..`hi`.
+impl MetricGrid {
+    /// Spacing `resolution`, by default `g`'s own at its middle latitude; coarsened (with a
+    /// warning naming `field`) to stay within [`MAX_GRID_NODES`].
+    fn new(
+        g: &GeoGrid,
+        frame: &GeoFrame,
+        (lo, hi): ([f64; 2], [f64; 2]),
+        resolution: Option<f64>,
+        field: &str,
+        warnings: &mut Vec<String>,
+    ) -> Result<Self> {
+        let lat_mid = (g.lat[0] + g.lat[g.ny() - 1]) / 2.0;
+        let native = {
+            let dlon = (g.lon[g.nx() - 1] - g.lon[0]) / (g.nx() - 1) as f64;
+            let dlat = (g.lat[g.ny() - 1] - g.lat[0]) / (g.ny() - 1) as f64;
+            (dlon * 111_320.0 * lat_mid.to_radians().cos()).min(dlat * 110_540.0)
+        };
+        let mut spacing = match resolution {
+            Some(r) if r > 0.0 && r.is_finite() => r,
+            Some(r) => return Err(Error::input(field, format!("must be positive, got {r}"))),
+            None => native,
+        };
+        let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
+        let nodes = |sp: f64| ((w / sp).ceil() as usize + 1, (h / sp).ceil() as usize + 1);
+        let (mut nx, mut ny) = nodes(spacing);
+        if (nx as f64) * (ny as f64) > MAX_GRID_NODES as f64 {
+            spacing *= ((nx as f64 * ny as f64) / MAX_GRID_NODES as f64).sqrt() * 1.01;
+            (nx, ny) = nodes(spacing);
+            warnings
+                .push(format!("{field}: resampled at {spacing:.0} m so the grid stays within {MAX_GRID_NODES} nodes"));
+        }
+        let (dx, dy) = (w / (nx - 1) as f64, h / (ny - 1) as f64);
+        let mut lonlat = Vec::with_capacity(nx * ny);
+        for j in 0..ny {
+            for i in 0..nx {
+                lonlat.push(frame.inverse(lo[0] + i as f64 * dx, lo[1] + j as f64 * dy));
+            }
+        }
+        Ok(Self { origin: lo, spacing: [dx, dy], shape: [nx, ny], lonlat })
+    }
+
+    /// The metric position of node `k`.
+    fn xy(&self, k: usize) -> (f64, f64) {
+        let [nx, _] = self.shape;
+        (self.origin[0] + (k % nx) as f64 * self.spacing[0], self.origin[1] + (k / nx) as f64 * self.spacing[1])
+    }
+
+    /// `g` bilinear at every node, `NaN` where it has no data. `valid_only` leaves out corners
+    /// without data ([`GeoGrid::sample_valid`]) instead of giving up on the node.
+    fn sample(&self, g: &GeoGrid, valid_only: bool) -> Vec<f64> {
+        let lon_first = g.lon[0];
+        self.lonlat
+            .iter()
+            .map(|&(lon, lat)| {
+                // Into the grid's longitude range (which may run past 180).
+                let lon = lon_first + (lon - lon_first).rem_euclid(360.0);
+                let value = if valid_only { g.sample_valid(lon, lat) } else { g.sample(lon, lat) };
+                value.filter(|v| v.is_finite()).unwrap_or(f64::NAN)
+            })
+            .collect()
+    }
+}
+
+/// The bathymetry resampled onto a metric grid over `lo`..`hi`; nodes without data are land.
 fn resample(
     g: &GeoGrid,
     frame: &GeoFrame,
@@ -298,65 +357,17 @@ fn resample(
     resolution: Option<f64>,
     warnings: &mut Vec<String>,
 ) -> Result<TerrainSpec> {
-    resample_with(g, frame, lo, hi, resolution, "world.terrain.resolution", warnings, NO_DATA_ELEVATION)
-}
-
-#[allow(clippy::too_many_arguments)]
-fn resample_with(
-    g: &GeoGrid,
-    frame: &GeoFrame,
-    lo: [f64; 2],
-    hi: [f64; 2],
-    resolution: Option<f64>,
-    field: &str,
-    warnings: &mut Vec<String>,
-    no_data: f64,
-) -> Result<TerrainSpec> {
-    let lat_mid = (g.lat[0] + g.lat[g.ny() - 1]) / 2.0;
-    let native = {
-        let dlon = (g.lon[g.nx() - 1] - g.lon[0]) / (g.nx() - 1) as f64;
-        let dlat = (g.lat[g.ny() - 1] - g.lat[0]) / (g.ny() - 1) as f64;
-        (dlon * 111_320.0 * lat_mid.to_radians().cos()).min(dlat * 110_540.0)
-    };
-    let mut spacing = match resolution {
-        Some(r) if r > 0.0 && r.is_finite() => r,
-        Some(r) => return Err(Error::input(field, format!("must be positive, got {r}"))),
-        None => native,
-    };
-    let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
-    let nodes = |sp: f64| ((w / sp).ceil() as usize + 1, (h / sp).ceil() as usize + 1);
-    let (mut nx, mut ny) = nodes(spacing);
-    if (nx as f64) * (ny as f64) > MAX_GRID_NODES as f64 {
-        spacing *= ((nx as f64 * ny as f64) / MAX_GRID_NODES as f64).sqrt() * 1.01;
-        (nx, ny) = nodes(spacing);
-        warnings.push(format!("{field}: resampled at {spacing:.0} m so the grid stays within {MAX_GRID_NODES} nodes"));
-    }
-    let (dx, dy) = (w / (nx - 1) as f64, h / (ny - 1) as f64);
-    let mut z = Vec::with_capacity(nx * ny);
-    let mut missing = 0usize;
-    let lon_first = g.lon[0];
-    for j in 0..ny {
-        for i in 0..nx {
-            let (lon, lat) = frame.inverse(lo[0] + i as f64 * dx, lo[1] + j as f64 * dy);
-            // Into the grid's longitude range (which may run past 180).
-            let lon = lon_first + (lon - lon_first).rem_euclid(360.0);
-            let value = if no_data.is_nan() { g.sample_valid(lon, lat) } else { g.sample(lon, lat) };
-            match value {
-                Some(v) if v.is_finite() => z.push(v),
-                _ => {
-                    missing += 1;
-                    z.push(no_data);
-                }
-            }
-        }
-    }
-    if missing > 0 && !no_data.is_nan() {
+    let m = MetricGrid::new(g, frame, (lo, hi), resolution, "world.terrain.resolution", warnings)?;
+    let mut z = m.sample(g, false);
+    let missing = z.iter().filter(|v| v.is_nan()).count();
+    if missing > 0 {
+        z.iter_mut().filter(|v| v.is_nan()).for_each(|v| *v = NO_DATA_ELEVATION);
         warnings.push(format!(
             "world.terrain: {missing} of {} nodes have no data in the file (fill or outside it) and are taken as land",
-            nx * ny
+            z.len()
         ));
     }
-    Ok(TerrainSpec::Grid { origin: lo, spacing: [dx, dy], shape: [nx, ny], elevations: z })
+    Ok(TerrainSpec::Grid { origin: m.origin, spacing: m.spacing, shape: m.shape, elevations: z })
 }
 
 /// Reads a current forecast file and rewrites `world.current` as a metric grid on the
@@ -399,40 +410,28 @@ fn load_currents(
     } else {
         series.times.iter().map(|t| (*t - epoch).num_milliseconds() as f64 / 1e3).collect()
     };
-    let (mut us, mut vs) = (Vec::new(), Vec::new());
-    let mut shape = [0usize; 2];
-    let mut grid_origin = lo;
-    let mut spacing = [0.0; 2];
-    let mut gaps: Vec<usize> = Vec::new();
+    let Some(first) = series.u.first() else {
+        return Err(Error::input("world.current.path", format!("`{path}`: no velocity layer inside the box")));
+    };
+    let m = MetricGrid::new(first, frame, (lo, hi), resolution, "world.current.resolution", warnings)?;
     let water = water_test(&spec.world.terrain);
+    let mut gaps: Vec<usize> = Vec::new();
+    let (mut us, mut vs) = (Vec::new(), Vec::new());
     for (gu, gv) in series.u.iter().zip(&series.v) {
-        let (
-            TerrainSpec::Grid { origin, spacing: sp, shape: sh, elevations: eu },
-            TerrainSpec::Grid { elevations: ev, .. },
-        ) = (
-            resample_values(gu, frame, lo, hi, resolution, "world.current.resolution", warnings)?,
-            resample_values(gv, frame, lo, hi, resolution, "world.current.resolution", warnings)?,
-        )
-        else {
-            unreachable!()
-        };
-        shape = sh;
-        grid_origin = origin;
-        spacing = sp;
-        // From east/north to the frame's axes: the local direction of north on the map.
+        let (eu, ev) = (m.sample(gu, true), m.sample(gv, true));
         let mut lu = Vec::with_capacity(eu.len());
         let mut lv = Vec::with_capacity(ev.len());
         for (k, (&e, &n)) in eu.iter().zip(&ev).enumerate() {
-            let (x, y) = (origin[0] + (k % sh[0]) as f64 * sp[0], origin[1] + (k / sh[0]) as f64 * sp[1]);
+            let xy = m.xy(k);
             if !e.is_finite() || !n.is_finite() {
-                if water(x, y) {
+                if water(xy.0, xy.1) {
                     gaps.push(k);
                 }
                 lu.push(0.0);
                 lv.push(0.0);
                 continue;
             }
-            let (u, v) = east_north_to_frame(frame, x, y, e, n);
+            let (u, v) = frame.east_north_to_xy(m.lonlat[k], xy, e, n);
             lu.push(u);
             lv.push(v);
         }
@@ -442,31 +441,21 @@ fn load_currents(
     gaps.sort_unstable();
     gaps.dedup();
     if let Some(&k) = gaps.first() {
-        let (x, y) =
-            (grid_origin[0] + (k % shape[0]) as f64 * spacing[0], grid_origin[1] + (k / shape[0]) as f64 * spacing[1]);
-        let (lon, lat) = frame.inverse(x, y);
+        let (x, y) = m.xy(k);
         warnings.push(format!(
-            "world.current: {} water nodes have no current data at some time step (land or fill in the forecast); routes through them are refused; the first at {:.4} {}, {:.4} {}",
+            "world.current: {} water nodes have no current data at some time step (land or fill in the forecast); routes through them are refused; the first at {}",
             gaps.len(),
-            lat.abs(),
-            if lat < 0.0 { "S" } else { "N" },
-            lon.abs(),
-            if lon < 0.0 { "W" } else { "E" }
+            frame.place(x, y)
         ));
     }
+    let (grid_origin, spacing, shape) = (m.origin, m.spacing, m.shape);
     spec.world.current = CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs, no_data: gaps };
     Ok(epoch)
 }
 
-/// A horizontal vector given east and north at the frame point (x, y), in the frame's x and y:
-/// they differ by the meridian convergence, the angle of local north on the map, which is 0 at
-/// the origin and grows away from it.
+/// A horizontal vector given east and north at the frame point (x, y), in the frame's x and y.
 fn east_north_to_frame(frame: &GeoFrame, x: f64, y: f64, east: f64, north: f64) -> (f64, f64) {
-    let (lon, lat) = frame.inverse(x, y);
-    let up = frame.forward(lon, (lat + 1e-3).min(90.0), "vector").map(|(x2, y2)| (x2 - x, y2 - y));
-    let angle = up.map(|(dx, dy)| dx.atan2(dy)).unwrap_or(0.0);
-    let (s, c) = angle.sin_cos();
-    (east * c + north * s, -east * s + north * c)
+    frame.east_north_to_xy(frame.inverse(x, y), (x, y), east, north)
 }
 
 /// Whether a metric point is water (seabed below the sea surface) in a resampled terrain grid;

@@ -46,12 +46,7 @@ impl World {
     /// "x, y" metres otherwise.
     pub fn place(&self, x: f64, y: f64) -> String {
         match &self.frame {
-            Some(f) => {
-                let (lon, lat) = f.inverse(x, y);
-                let ns = if lat >= 0.0 { "N" } else { "S" };
-                let ew = if lon >= 0.0 { "E" } else { "W" };
-                format!("{:.4} {ns}, {:.4} {ew}", lat.abs(), lon.abs())
-            }
+            Some(f) => f.place(x, y),
             None => format!("{x:.0}, {y:.0}"),
         }
     }
