@@ -7,6 +7,52 @@ use crate::error::{Error, Result};
 /// any sensible in-memory subset of a bathymetry file.
 pub const MAX_NODES: usize = 1 << 28;
 
+/// Within this distance (in cells) of a cell edge a coordinate counts as on it, so that a walk
+/// over cells never gets stuck on an edge it computed in floating point.
+pub const EDGE_TOL: f64 = 1e-9;
+
+/// Walks the line (u0 + du s, v0 + dv s), in cell units, over s in [s0, s1] cell by cell:
+/// `stretch(s, e)` is called for each stretch between two crossings of the cell edges
+/// u = 1..=edges_u and v = 1..=edges_v (beyond the outer edges the edge cells extend), in
+/// order, until it returns `true`. Returns `Some(true)` if it did, `Some(false)` at the end,
+/// and `None` with the walk stalled by rounding (at most edges_u + edges_v + 4 steps), in which
+/// case the caller must judge the rest conservatively.
+pub(crate) fn walk_cells(
+    (u0, du): (f64, f64),
+    (v0, dv): (f64, f64),
+    (edges_u, edges_v): (usize, usize),
+    (s0, s1): (f64, f64),
+    mut stretch: impl FnMut(f64, f64) -> bool,
+) -> Option<bool> {
+    // The next parameter past s where the line crosses an edge along one axis.
+    let next = |p: f64, d: f64, s: f64, last: usize| {
+        let c = p + d * s;
+        let line = if d > 0.0 {
+            ((c + EDGE_TOL).floor() + 1.0).max(1.0)
+        } else if d < 0.0 {
+            ((c - EDGE_TOL).ceil() - 1.0).min(last as f64)
+        } else {
+            return f64::INFINITY;
+        };
+        if line < 1.0 || line > last as f64 {
+            return f64::INFINITY;
+        }
+        (line - p) / d
+    };
+    let mut s = s0;
+    for _ in 0..(edges_u + edges_v + 4) {
+        let e = next(u0, du, s, edges_u).min(next(v0, dv, s, edges_v)).min(s1).max(s);
+        if stretch(s, e) {
+            return Some(true);
+        }
+        if e >= s1 {
+            return Some(false);
+        }
+        s = e;
+    }
+    None
+}
+
 /// Node (i, j) sits at (x0 + i dx, y0 + j dy); values are stored row-major by y then x:
 /// `values[j * nx + i]`.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,7 +2,7 @@
 
 use crate::error::{Error, Result};
 use crate::geom::{Aabb, Vec3};
-use crate::world::grid::RegularGrid2;
+use crate::world::grid::{walk_cells, RegularGrid2};
 
 /// u, v components on a regular grid at a list of times; bilinear in space, linear in time.
 ///
@@ -152,31 +152,16 @@ impl CurrentGrid {
             let (x, y) = world(t0);
             return (!self.has_data(x, y)).then_some((x, y));
         }
-        // The next parameter past t where the segment crosses a grid line along one axis.
-        let next = |p: f64, d: f64, t: f64| {
-            let c = p + d * t;
-            if d > 0.0 {
-                (c.floor() + 1.0 - p) / d
-            } else if d < 0.0 {
-                (c.ceil() - 1.0 - p) / d
-            } else {
-                f64::INFINITY
-            }
-        };
-        let mut t = t0;
-        // Each step passes at least one grid line; the bound only guards rounding.
-        for _ in 0..(g.nx + g.ny + 4) {
-            let te = next(u0, du, t).min(next(v0, dv, t)).min(t1);
+        // Inside the clipped range the edges between cells are the lines 1..=nx - 2.
+        let mut found = None;
+        walk_cells((u0, du), (v0, dv), (g.nx - 2, g.ny - 2), (t0, t1), |t, te| {
             let tm = 0.5 * (t + te);
             if te > t && gap_cell(tm) {
-                return Some(world(tm));
+                found = Some(world(tm));
             }
-            if te >= t1 {
-                break;
-            }
-            t = te.max(t + f64::EPSILON);
-        }
-        None
+            found.is_some()
+        });
+        found
     }
 
     /// The two layers around `t` and the weight of the second; outside the time range the

@@ -10,10 +10,7 @@
 
 use crate::error::{Error, Result};
 use crate::geom::Vec3;
-
-/// Snap distance (in cells) within which a coordinate counts as on a cell edge, so that points
-/// computed on an edge in floating point see both cells.
-const EDGE_TOL: f64 = 1e-9;
+use crate::world::grid::{walk_cells, EDGE_TOL};
 
 /// Above this many cells a rectangle's upper bound is the grid's highest cell (still an upper
 /// bound); the segment walk settles what it leaves open.
@@ -157,35 +154,19 @@ impl CellGrid {
         let point = |s: f64| a + (b - a) * s;
         let (ua, va) = ((a.x - self.x0) / self.dx, (a.y - self.y0) / self.dy);
         let (du, dv) = ((b.x - a.x) / self.dx, (b.y - a.y) / self.dy);
-        // The next parameter past s where the segment crosses a cell edge along one axis;
-        // outside the grid the edge cells hold, so only lines 1..n-1 count.
-        let next = |p: f64, d: f64, s: f64, n: usize| {
-            let c = p + d * s;
-            let last = (n - 1) as f64;
-            let line = if d > 0.0 {
-                ((c + EDGE_TOL).floor() + 1.0).max(1.0)
-            } else if d < 0.0 {
-                ((c - EDGE_TOL).ceil() - 1.0).min(last)
-            } else {
-                return f64::INFINITY;
-            };
-            if line < 1.0 || line > last {
-                return f64::INFINITY;
-            }
-            (line - p) / d
-        };
         let mut best = f64::INFINITY;
-        let mut s = s0;
-        for _ in 0..(self.nx + self.ny + 4) {
-            let e = next(ua, du, s, self.nx).min(next(va, dv, s, self.ny)).min(s1).max(s);
+        let mut reached = s0;
+        let walked = walk_cells((ua, du), (va, dv), (self.nx - 1, self.ny - 1), (s0, s1), |s, e| {
             let (pa, pe) = (point(s), point(e));
             let mid = point(0.5 * (s + e));
             best = best.min(pa.z.min(pe.z) - self.elevation(mid.x, mid.y));
-            if e >= s1 {
-                return best;
-            }
-            s = e;
+            reached = e;
+            false
+        });
+        if walked.is_some() {
+            return best;
         }
+        let s = reached;
         // Only rounding could stall the walk: bound the rest by the highest cell.
         best.min(point(s).z.min(point(s1).z) - self.z_max)
     }
