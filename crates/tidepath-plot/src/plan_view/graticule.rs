@@ -100,15 +100,18 @@ impl Graticule {
         let mut x_ticks = Vec::new();
         let mut y_ticks = Vec::new();
         const SAMPLES: usize = 48;
-        let mut lon = (lon_r.0 / sx).ceil() * sx;
-        while lon <= lon_r.1 && lines.len() < 64 {
-            let line: Vec<(f64, f64)> = (0..=SAMPLES)
+        // A meridian or parallel as a polyline in the frame: point k of SAMPLES + 1.
+        let curve = |at: &dyn Fn(f64) -> (f64, f64)| -> Vec<(f64, f64)> {
+            (0..=SAMPLES)
                 .filter_map(|k| {
-                    let lat = lat_r.0 + (lat_r.1 - lat_r.0) * k as f64 / SAMPLES as f64;
+                    let (lon, lat) = at(k as f64);
                     frame.forward(lon, lat, "graticule").ok()
                 })
-                .collect();
-            lines.push(line);
+                .collect()
+        };
+        let mut lon = (lon_r.0 / sx).ceil() * sx;
+        while lon <= lon_r.1 && lines.len() < 64 {
+            lines.push(curve(&|k| (lon, lat_r.0 + (lat_r.1 - lat_r.0) * k / SAMPLES as f64)));
             if let Some(x) = solve(|x| lon_at(x, y0), lon, x0, x1) {
                 x_ticks.push((x, lon_label(lon, dx)));
             }
@@ -116,13 +119,7 @@ impl Graticule {
         }
         let mut lat = (lat_r.0 / sy).ceil() * sy;
         while lat <= lat_r.1 && lines.len() < 128 {
-            let line: Vec<(f64, f64)> = (0..=SAMPLES)
-                .filter_map(|k| {
-                    let lon = lon_r.0 + (lon_r.1 - lon_r.0) * k as f64 / SAMPLES as f64;
-                    frame.forward(lon, lat, "graticule").ok()
-                })
-                .collect();
-            lines.push(line);
+            lines.push(curve(&|k| (lon_r.0 + (lon_r.1 - lon_r.0) * k / SAMPLES as f64, lat)));
             if let Some(y) = solve(|y| lat_at(x0, y), lat, y0, y1) {
                 y_ticks.push((y, lat_label(lat, dy)));
             }
