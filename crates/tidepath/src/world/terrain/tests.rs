@@ -157,6 +157,16 @@ fn grid_bound_never_below_dense_samples() {
     }
 }
 
+/// The least of z - h over n + 1 evenly spaced points of a -> b.
+fn sampled_min_clearance(t: &Terrain, a: Vec3, b: Vec3, n: usize) -> f64 {
+    (0..=n)
+        .map(|k| {
+            let p = a + (b - a) * (k as f64 / n as f64);
+            p.z - t.elevation(p.x, p.y)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
 #[test]
 fn grid_exact_min_clearance_matches_dense_sampling() {
     let mut rng = ChaCha8Rng::seed_from_u64(5);
@@ -171,12 +181,7 @@ fn grid_exact_min_clearance_matches_dense_sampling() {
         let Some(m) = t.exact_min_clearance(a, b, 0.0, 1.0) else { continue };
         settled += 1;
         let n = 4000;
-        let sampled = (0..=n)
-            .map(|k| {
-                let p = a + (b - a) * (k as f64 / n as f64);
-                p.z - t.elevation(p.x, p.y)
-            })
-            .fold(f64::INFINITY, f64::min);
+        let sampled = sampled_min_clearance(&t, a, b, n);
         // Exact minimum: never above a sample, and samples 1/4000 apart come within the
         // clearance's change over half a step.
         let step = (b - a).length() * (1.0 + 20.0) / n as f64;
@@ -267,12 +272,7 @@ fn cells_clearance_along_segments_is_exact() {
         let b = Vec3::new(rng.random_range(90.0..150.0), rng.random_range(190.0..270.0), rng.random_range(-30.0..0.0));
         let m = hit(a, b);
         let n = 20_000;
-        let sampled = (0..=n)
-            .map(|k| {
-                let p = a + (b - a) * (k as f64 / n as f64);
-                p.z - t.elevation(p.x, p.y)
-            })
-            .fold(f64::INFINITY, f64::min);
+        let sampled = sampled_min_clearance(&t, a, b, n);
         assert!(m <= sampled + 1e-9, "exact {m} above sampled {sampled} for {a} -> {b}");
         if sampled - m <= (b.z - a.z).abs() * 2.0 / n as f64 + 1e-9 {
             close += 1;
