@@ -105,6 +105,34 @@ impl Comparison {
     }
 }
 
+/// Most runs per planner and problem (`--runs`): far beyond any statistical need, few enough
+/// that the run records fit in memory.
+pub const MAX_RUNS: u64 = 100_000;
+
+/// Most runs of one experiment in all (problems x planners x runs).
+pub const MAX_TASKS: u64 = 1_000_000;
+
+/// `--runs` must be from 1 to [`MAX_RUNS`].
+pub fn check_runs(runs: u64) -> Result<()> {
+    if runs == 0 || runs > MAX_RUNS {
+        return Err(Error::input("--runs", format!("must be from 1 to {MAX_RUNS}, got {runs}")));
+    }
+    Ok(())
+}
+
+/// The experiment's size: `runs` checked, and problems x planners x runs at most [`MAX_TASKS`].
+fn check_size(problems: usize, planners: usize, runs: u64) -> Result<()> {
+    check_runs(runs)?;
+    let total = (problems as u64).saturating_mul(planners as u64).saturating_mul(runs);
+    if total > MAX_TASKS {
+        return Err(Error::input(
+            "--runs",
+            format!("{problems} problems x {planners} planners x {runs} runs = {total} runs, more than the limit of {MAX_TASKS}"),
+        ));
+    }
+    Ok(())
+}
+
 fn check_planners(planners: &[String]) -> Result<()> {
     if planners.is_empty() {
         return Err(Error::input("--planners", "name at least one planner"));
@@ -130,9 +158,7 @@ pub fn compare_scenario(
     on_done: &(dyn Fn(usize) + Sync),
 ) -> Result<Comparison> {
     check_planners(planners)?;
-    if runs == 0 {
-        return Err(Error::input("--runs", "must be at least 1, got 0"));
-    }
+    check_size(1, planners.len(), runs)?;
     // Fail on a bad planner id or parameter before any run starts.
     let registry = tidepath::planner::registry();
     for p in planners {
@@ -220,9 +246,7 @@ pub fn compare_functions(
     on_done: &(dyn Fn(usize) + Sync),
 ) -> Result<Comparison> {
     check_planners(planners)?;
-    if runs == 0 {
-        return Err(Error::input("--runs", "must be at least 1, got 0"));
-    }
+    check_size(problems.len(), planners.len(), runs)?;
     let default_factory = |id: &str| build_optimizer(id, None, budget.population);
     let factory: &OptimizerFactory<'_> = factory.unwrap_or(&default_factory);
     for p in planners {

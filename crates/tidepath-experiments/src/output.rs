@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use super::compare::Comparison;
-use tidepath::error::{Error, Result};
+use tidepath::error::Result;
 use tidepath::io::{write_atomic, Outputs};
 use tidepath::scenario::Scenario;
 
@@ -55,6 +55,9 @@ fn csv_field(s: &str) -> String {
 /// Draws a comparison's figures. The plotting layer implements it and the command line passes
 /// it in, so the experiments never import plotting.
 pub trait FigureRenderer: Sync {
+    /// The file names [`FigureRenderer::render`] gives, known before any run so that every
+    /// output target is checked before the work starts; `scenario` says whether a map is drawn.
+    fn names(&self, scenario: bool) -> Vec<&'static str>;
     /// (file name, SVG text) of every figure of `c`; `scenario` adds its map.
     fn render(&self, c: &Comparison, scenario: Option<&Scenario>) -> Result<Vec<(String, String)>>;
 }
@@ -63,57 +66,77 @@ pub trait FigureRenderer: Sync {
 pub struct NoFigures;
 
 impl FigureRenderer for NoFigures {
+    fn names(&self, _: bool) -> Vec<&'static str> {
+        Vec::new()
+    }
+
     fn render(&self, _: &Comparison, _: Option<&Scenario>) -> Result<Vec<(String, String)>> {
         Ok(Vec::new())
     }
 }
 
+/// The table files' names, in the order [`table_files`] gives them.
+pub const TABLE_FILES: [&str; 3] = ["results.json", "runs.csv", "table.md"];
+
 /// results.json, runs.csv and table.md (the Markdown table printed on stdout).
 pub fn table_files(c: &Comparison) -> Vec<(String, String)> {
-    vec![
-        ("results.json".into(), results_json(c)),
-        ("runs.csv".into(), runs_csv(c)),
-        ("table.md".into(), super::table::markdown(&c.rows, c.is_functions())),
-    ]
+    let texts = [results_json(c), runs_csv(c), super::table::markdown(&c.rows, c.is_functions())];
+    TABLE_FILES.iter().zip(texts).map(|(n, t)| (n.to_string(), t)).collect()
+}
+
+/// Declares every file of a results folder `dir` in `out`, so that a bad target is refused
+/// before any run (the folder is created only when `out` is committed).
+pub fn declare_results(
+    out: &mut Outputs,
+    flag: &str,
+    dir: &Path,
+    figures: &dyn FigureRenderer,
+    scenario: bool,
+) -> Result<()> {
+    for name in TABLE_FILES.iter().copied().chain(figures.names(scenario)) {
+        out.declare_in(flag, dir, name)?;
+    }
+    Ok(())
+}
+
+/// Fills the results folder `dir` in `out`: the tables and `figures` of `c`.
+pub fn stage_results(
+    out: &mut Outputs,
+    flag: &str,
+    dir: &Path,
+    c: &Comparison,
+    scenario: Option<&Scenario>,
+    figures: &dyn FigureRenderer,
+) -> Result<()> {
+    stage_files(out, flag, dir, &table_files(c))?;
+    stage_files(out, flag, dir, &figures.render(c, scenario)?)
 }
 
 /// Stages `files` (name, contents) into `dir` through `out`.
 pub fn stage_files(out: &mut Outputs, flag: &str, dir: &Path, files: &[(String, String)]) -> Result<()> {
     for (name, text) in files {
-        out.stage(flag, &dir.join(name), text.as_bytes())?;
+        out.stage_in(flag, dir, name, text.as_bytes())?;
     }
     Ok(())
 }
 
-/// Runs `write` with `dir` created if missing; when `write` fails, a folder it created is removed
-/// again, so a failed command leaves nothing behind.
-pub fn in_output_dir(flag: &str, dir: &Path, write: impl FnOnce() -> Result<()>) -> Result<()> {
-    let created = !dir.exists();
-    if created {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
-    } else if !dir.is_dir() {
-        return Err(Error::input(flag, format!("'{}' exists and is not a folder", dir.display())));
-    }
-    let r = write();
-    if r.is_err() && created {
-        let _ = std::fs::remove_dir_all(dir);
-    }
-    r
-}
-
-/// The tables and `figures` of `c` in `dir`: all files or none.
+/// The tables and `figures` of `c` in `dir`: all files or none (the library entry point; the
+/// command line declares its targets before running, then stages as here).
 pub fn write_all(c: &Comparison, dir: &Path, scenario: Option<&Scenario>, figures: &dyn FigureRenderer) -> Result<()> {
-    in_output_dir("--out", dir, || {
-        let mut out = Outputs::new();
-        stage_files(&mut out, "--out", dir, &table_files(c))?;
-        stage_files(&mut out, "--out", dir, &figures.render(c, scenario)?)?;
-        out.commit()
-    })
+    let mut out = Outputs::new();
+    stage_results(&mut out, "--out", dir, c, scenario, figures)?;
+    out.commit()
 }
 
-/// An OMPL benchmark log of the comparison (one experiment per problem, concatenated logs are
-/// not allowed by the format, so only the first problem is written; `compare` has one).
+/// An OMPL benchmark log of the comparison, written safely.
 pub fn write_ompl(c: &Comparison, path: &Path) -> Result<()> {
+    write_atomic(path, ompl_log_text(c).as_bytes())
+}
+
+/// The text of an OMPL benchmark log of the comparison (one experiment per problem;
+/// concatenated logs are not allowed by the format, so only the first problem is written;
+/// `compare` has one).
+pub fn ompl_log_text(c: &Comparison) -> String {
     use super::ompl_log::{write_ompl_log, OmplLogInfo};
     let problem = c.problems.first().cloned().unwrap_or_default();
     let host =
@@ -139,5 +162,5 @@ pub fn write_ompl(c: &Comparison, path: &Path) -> Result<()> {
     };
     let planners: Vec<(&str, Vec<&super::RunRecord>)> =
         c.planners.iter().map(|p| (p.as_str(), c.records_of(&problem, p).collect())).collect();
-    write_atomic(path, write_ompl_log(&info, &planners).as_bytes())
+    write_ompl_log(&info, &planners)
 }

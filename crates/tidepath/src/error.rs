@@ -1,16 +1,19 @@
-//! Errors a user can act on: each names the field or file and the offending value.
+//! Errors a user can act on: each names the field or file and the offending value, on one
+//! line (control characters in values are shown escaped).
 
 use std::path::PathBuf;
+
+use crate::text::one_line;
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     /// Bad input: a scenario field, a CLI value, a plan file. Exit code 2.
-    #[error("{field}: {message}")]
+    #[error("{}: {}", one_line(field), one_line(message))]
     Input { field: String, message: String },
     /// A file could not be read or written. Exit code 2.
-    #[error("{}: {source}", path.display())]
+    #[error("{}: {}", one_line(&path.display().to_string()), one_line(&source.to_string()))]
     Io {
         path: PathBuf,
         #[source]

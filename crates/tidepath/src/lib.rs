@@ -4,8 +4,8 @@
 //!
 //! Each module knows only the ones listed before it:
 //!
-//! * [`geom`], [`error`], [`geo`], [`config`], [`rng`], [`registry`]: shared basics (vectors,
-//!   errors that name the field, the latitude/longitude frame, TOML decoding, seeded streams,
+//! * [`geom`], [`text`], [`error`], [`geo`], [`config`], [`rng`], [`registry`]: shared basics
+//!   (vectors, one-line text, errors that name the field, the latitude/longitude frame, TOML decoding, seeded streams,
 //!   the one registry-table type);
 //! * [`world`]: seabed, obstacles and currents, answering questions at a point and time;
 //! * [`vehicle`], [`mission`]: what the robot can do; where it goes and when it leaves;
@@ -38,6 +38,7 @@ pub mod scenario;
 pub mod scratch;
 pub mod smoothing;
 pub mod termination;
+pub mod text;
 pub mod validity;
 pub mod vehicle;
 pub mod world;

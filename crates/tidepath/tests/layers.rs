@@ -4,6 +4,7 @@
 
 const ORDER: &[&str] = &[
     "geom",
+    "text",
     "error",
     "geo",
     "config",

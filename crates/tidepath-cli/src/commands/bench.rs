@@ -1,6 +1,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
+use tidepath::io::Outputs;
 use tidepath::optim::functions::Function;
 use tidepath::Error;
 use tidepath_experiments::compare::{compare_functions, FunctionProblem, RunBudget};
@@ -131,13 +132,21 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
         population: args.population,
         time_limit_s: None,
     };
+    tidepath_experiments::compare::check_runs(args.runs)?;
+    tidepath::termination::check_count("--evaluations", args.evaluations)?;
+    let figures = tidepath_plot::ExperimentFigures;
+    let mut outputs = Outputs::new();
+    if let Some(dir) = &args.out {
+        output::declare_results(&mut outputs, "--out", dir, &figures, false)?;
+    }
     let bar = RunsBar::new("bench", problems.len() * args.algos.len() * args.runs as usize);
     let result = compare_functions(&problems, &args.algos, args.runs, args.seed, &budget, jobs, None, &|n| bar.set(n));
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {
-        output::write_all(&c, dir, None, &tidepath_plot::ExperimentFigures)?;
+        output::stage_results(&mut outputs, "--out", dir, &c, None, &figures)?;
     }
+    outputs.commit()?;
     println!(
         "{} runs per pair, {} evaluations each, master seed {}, {:.1} s\n",
         args.runs, args.evaluations, args.seed, c.total_wall_s

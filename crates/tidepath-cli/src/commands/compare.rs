@@ -1,7 +1,9 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use tidepath::io::Outputs;
 use tidepath::scenario;
+use tidepath::scenario::PlanRequest;
 use tidepath::Error;
 use tidepath_experiments::compare::{compare_scenario, default_reference, RunBudget};
 use tidepath_experiments::output;
@@ -37,22 +39,36 @@ pub struct CompareArgs {
 pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
     let jobs = crate::jobs(args.run.jobs)?;
+    tidepath_experiments::compare::check_runs(args.runs)?;
     let budget = RunBudget {
         iterations: args.run.iterations,
         evaluations: args.run.evaluations,
         population: args.run.population,
         time_limit_s: None,
     };
-    let total = args.planners.len() * args.runs as usize;
-    let bar = RunsBar::new("compare", total);
     let reference = match args.reference.as_deref() {
         Some("none") => None,
-        Some(id) => {
-            tidepath::planner::registry().get(id).map_err(|e| e.for_field("--reference"))?;
-            Some(id.to_string())
-        }
+        Some(id) => Some(id.to_string()),
         None => Some(default_reference(&scenario).to_string()),
     };
+    // Every planner, the reference and every output target are checked before the first run.
+    for p in &args.planners {
+        tidepath::planner::registry().get(p).map_err(|e| e.for_field("--planners"))?;
+        scenario.check_request(&request(&budget, p))?;
+    }
+    if let Some(id) = &reference {
+        let r = RunBudget { iterations: None, evaluations: None, population: None, ..budget.clone() };
+        scenario.check_request(&request(&r, id)).map_err(|e| e.for_field("--reference"))?;
+    }
+    let figures = tidepath_plot::ExperimentFigures;
+    let mut outputs = Outputs::new();
+    if let Some(dir) = &args.out {
+        output::declare_results(&mut outputs, "--out", dir, &figures, true)?;
+    }
+    let ompl_id = args.ompl_log.as_deref().map(|p| outputs.declare("--ompl-log", p)).transpose()?;
+
+    let total = args.planners.len() * args.runs as usize;
+    let bar = RunsBar::new("compare", total);
     let result = compare_scenario(
         &scenario,
         &args.planners,
@@ -66,11 +82,12 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {
-        output::write_all(&c, dir, Some(&scenario), &tidepath_plot::ExperimentFigures)?;
+        output::stage_results(&mut outputs, "--out", dir, &c, Some(&scenario), &figures)?;
     }
-    if let Some(log) = &args.ompl_log {
-        output::write_ompl(&c, log)?;
+    if let Some(id) = ompl_id {
+        outputs.fill(id, output::ompl_log_text(&c));
     }
+    outputs.commit()?;
     println!(
         "{} — {} runs per planner, master seed {}, {:.1} s\n",
         scenario.name, args.runs, args.run.seed, c.total_wall_s
@@ -96,4 +113,16 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
         );
     }
     Ok(Outcome::Success)
+}
+
+/// The request of one compared run, for checking it before any run starts.
+fn request(budget: &RunBudget, planner: &str) -> PlanRequest {
+    PlanRequest {
+        planner: Some(planner.to_string()),
+        iterations: budget.iterations,
+        evaluations: budget.evaluations,
+        population: budget.population,
+        time_limit_s: budget.time_limit_s,
+        ..PlanRequest::default()
+    }
 }

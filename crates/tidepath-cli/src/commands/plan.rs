@@ -2,7 +2,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use tidepath::io::export::{export, ExportFormat, Georef};
-use tidepath::io::{check_target, Outputs, PlanFile, PlanReport};
+use tidepath::io::{Outputs, PlanFile, PlanReport};
 use tidepath::scenario::{self, PlanRequest, Scenario};
 use tidepath::Error;
 use tidepath_plot::{render_plan_figure, PlanFigure, PlotPath};
@@ -62,20 +62,14 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         // Only the first pool configuration counts; a fresh process has none yet.
         let _ = rayon::ThreadPoolBuilder::new().num_threads(crate::jobs(args.run.jobs)?).build_global();
     }
-    // Refuse bad output paths before spending time on planning.
-    for (flag, path) in [("--out", &args.out), ("--plot", &args.plot)] {
-        if let Some(p) = path {
-            check_target(flag, p)?;
-        }
-    }
+    // Every flag and every output target is checked before any planning: a refusal costs no
+    // time and leaves nothing behind.
+    let mut outputs = Outputs::new();
+    let out_id = args.out.as_deref().map(|p| outputs.declare("--out", p)).transpose()?;
+    let plot_id = args.plot.as_deref().map(|p| outputs.declare("--plot", p)).transpose()?;
     let out_format = args.out.as_deref().map(|p| ExportFormat::of(p, "--out")).transpose()?;
     if let Some(f) = out_format {
         f.check(scenario.frame.as_ref(), "--out")?;
-    }
-    if let (Some(a), Some(b)) = (&args.out, &args.plot) {
-        if a == b {
-            return Err(Error::input("--plot", format!("'{}' is also the --out file", b.display())));
-        }
     }
     let init = match &args.init {
         Some(path) => Some(PlanFile::read(path)?.mission_paths()),
@@ -94,27 +88,36 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         init,
         stop: Some(crate::stop_flag()),
     };
+    scenario.check_request(&req)?;
+    let reference_req = args.reference.as_ref().map(|id| {
+        let r = PlanRequest { planner: Some(id.clone()), seed: args.run.seed, init: None, ..req.clone() };
+        PlanRequest { iterations: None, evaluations: None, population: None, smoother: None, ..r }
+    });
+    if let Some(r) = &reference_req {
+        scenario.check_request(r).map_err(|e| e.for_field("--reference"))?;
+    }
+
     let label = req.planner.clone().unwrap_or_else(|| scenario.planner.id.clone());
     let mut bar = DelayedBar::new(&label);
     let report = scenario.plan(&req, &mut |p| bar.update(p));
     bar.finish();
     let report = report?;
+    let reference = match &reference_req {
+        Some(r) => Some(scenario.plan(r, &mut |_| {}).map_err(|e| e.for_field("--reference"))?),
+        None => None,
+    };
 
-    // Both files or neither.
-    let mut outputs = Outputs::new();
-    if let (Some(out), Some(format)) = (&args.out, out_format) {
+    // Every file or none.
+    if let (Some(id), Some(format)) = (out_id, out_format) {
         let geo = Georef { frame: scenario.frame.as_ref(), epoch: scenario.epoch };
-        outputs.stage("--out", out, export(&report, format, geo)?.as_bytes())?;
+        outputs.fill(id, export(&report, format, geo)?);
     }
-    if let Some(plot) = &args.plot {
-        outputs.stage("--plot", plot, figure(&scenario, &report)?.as_bytes())?;
+    if let Some(id) = plot_id {
+        outputs.fill(id, figure(&scenario, &report)?);
     }
     outputs.commit()?;
     print_summary(&scenario, &report);
-    if let Some(id) = &args.reference {
-        let r = PlanRequest { planner: Some(id.clone()), seed: args.run.seed, init: None, ..req.clone() };
-        let r = PlanRequest { iterations: None, evaluations: None, population: None, smoother: None, ..r };
-        let reference = scenario.plan(&r, &mut |_| {}).map_err(|e| e.for_field("--reference"))?;
+    if let Some(reference) = reference {
         match (reference.status.is_success(), reference.cost, report.cost) {
             (true, Some(rc), Some(c)) => {
                 let pct = |a: Option<f64>, b: Option<f64>| match (a, b) {

@@ -1,8 +1,9 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use tidepath::io::Outputs;
 use tidepath::Error;
-use tidepath_experiments::reproduce::{paper, reproduce, ClaimVerdict, ReproduceOptions, PAPERS};
+use tidepath_experiments::reproduce::{paper, reproduce, ClaimVerdict, ReproduceOptions, PAPERS, REPORT_FILE};
 
 use crate::progress::RunsBar;
 use crate::Outcome;
@@ -41,6 +42,10 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
     if let Some(id) = args.reference.as_deref().filter(|id| *id != "none") {
         tidepath::planner::registry().get(id).map_err(|e| e.for_field("--reference"))?;
     }
+    tidepath_experiments::reproduce::check_runs(args.runs)?;
+    let figures = tidepath_plot::ExperimentFigures;
+    let mut outputs = Outputs::new();
+    outputs.declare_in("--out", &args.out, REPORT_FILE)?;
     let opts = ReproduceOptions {
         runs: args.runs,
         master_seed: args.seed,
@@ -51,17 +56,19 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
     let outcomes = reproduce(
         paper,
         &opts,
+        &mut outputs,
         &args.out,
         &|done, total| {
             let mut b = bar.lock().expect("progress lock");
             b.get_or_insert_with(|| RunsBar::new(paper.id, total)).set(done);
         },
-        &tidepath_plot::ExperimentFigures,
+        &figures,
     );
     if let Some(b) = bar.into_inner().expect("progress lock") {
         b.finish();
     }
     let outcomes = outcomes?;
+    outputs.commit()?;
     for o in &outcomes {
         let ok = o.claims.iter().filter(|(_, v)| matches!(v, ClaimVerdict::Reproduced { .. })).count();
         println!("{}: {} of {} claims reproduced", o.title, ok, o.claims.len());

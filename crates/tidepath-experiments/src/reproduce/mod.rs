@@ -14,6 +14,7 @@ use std::path::Path;
 
 use super::compare::Comparison;
 use tidepath::error::{Error, Result};
+use tidepath::io::Outputs;
 use tidepath::registry::{no_params, Entry, Registry};
 
 /// Options shared by every reproduction.
@@ -82,20 +83,31 @@ pub fn paper(id: &str) -> Result<Paper> {
     papers().get(id).copied()
 }
 
-/// Runs `paper` and writes DIR/REPORT.md, per-experiment results and figures.
+/// The report's file in the output folder, declared before any run.
+pub const REPORT_FILE: &str = "REPORT.md";
+
+/// Runs `paper` and stages DIR/REPORT.md, per-experiment results and figures into `out`
+/// (written when the caller commits it, all or none).
 pub fn reproduce(
     paper: &Paper,
     opts: &ReproduceOptions,
+    out: &mut Outputs,
     dir: &Path,
     progress: &(dyn Fn(usize, usize) + Sync),
     figures: &dyn super::output::FigureRenderer,
 ) -> Result<Vec<ExperimentOutcome>> {
-    if opts.runs < 2 {
-        return Err(Error::input("--runs", format!("needs at least 2 runs for statistics, got {}", opts.runs)));
-    }
+    check_runs(opts.runs)?;
     let outcomes = (paper.build)(opts, progress)?;
-    super::output::in_output_dir("--out", dir, || report::write(paper, opts, &outcomes, dir, figures))?;
+    report::stage(out, paper, opts, &outcomes, dir, figures)?;
     Ok(outcomes)
+}
+
+/// Statistics need two runs; the count is bounded like every count flag.
+pub fn check_runs(runs: u64) -> Result<()> {
+    if runs < 2 {
+        return Err(Error::input("--runs", format!("needs at least 2 runs for statistics, got {runs}")));
+    }
+    super::compare::check_runs(runs)
 }
 
 #[cfg(test)]

@@ -49,15 +49,15 @@ fn opt(v: Option<f64>) -> String {
     v.map_or("—".into(), num)
 }
 
-pub(super) fn write(
+/// Stages REPORT.md and each experiment's folder (tables and figures) into `out`.
+pub(super) fn stage(
+    out: &mut Outputs,
     paper: &Paper,
     opts: &ReproduceOptions,
     outcomes: &[ExperimentOutcome],
     dir: &Path,
     figures: &dyn output::FigureRenderer,
 ) -> Result<()> {
-    let mut out = Outputs::new();
-    let mut subdirs = Vec::new();
     let mut md = String::new();
     let _ = writeln!(md, "# Reproduction: {}\n", paper.description);
     let _ = writeln!(
@@ -90,12 +90,7 @@ pub(super) fn write(
 
     for o in outcomes {
         let sub = dir.join(&o.id);
-        subdirs.push(sub.clone());
-        if !sub.exists() {
-            std::fs::create_dir_all(&sub).map_err(|e| tidepath::Error::io(&sub, e))?;
-        }
-        output::stage_files(&mut out, "--out", &sub, &output::table_files(&o.comparison))?;
-        output::stage_files(&mut out, "--out", &sub, &figures.render(&o.comparison, None)?)?;
+        output::stage_results(out, "--out", &sub, &o.comparison, None, figures)?;
         let _ = writeln!(md, "## {}\n", o.title);
         let _ = writeln!(md, "{}\n", o.setup);
         let _ = writeln!(
@@ -167,8 +162,7 @@ pub(super) fn write(
         }
         let _ = writeln!(md, "\n![convergence]({id}/convergence.svg)\n\n![final costs]({id}/boxplot.svg)\n", id = o.id);
     }
-    out.stage("--out", &dir.join("REPORT.md"), md.as_bytes())?;
-    out.commit()
+    out.stage_in("--out", dir, "REPORT.md", md.as_bytes())
 }
 
 /// One line saying what the gap column measures against, or why there is none.
@@ -241,7 +235,12 @@ mod tests {
             build: |_, _| Ok(Vec::new()),
         };
         let dir = tempfile::tempdir().unwrap();
-        write(&paper, &opts, &[outcome(c.clone())], dir.path(), &output::NoFigures).unwrap();
+        let write = |o: ExperimentOutcome| {
+            let mut out = Outputs::new();
+            stage(&mut out, &paper, &opts, &[o], dir.path(), &output::NoFigures).unwrap();
+            out.commit().unwrap();
+        };
+        write(outcome(c.clone()));
         let md = std::fs::read_to_string(dir.path().join("REPORT.md")).unwrap();
         assert!(md.contains("Gap to a reference: visibility ("), "{md}");
         assert!(md.contains("gap % (best / mean) |"), "{md}");
@@ -252,7 +251,7 @@ mod tests {
         let mut f = c;
         f.kind = "functions".into();
         f.reference = None;
-        write(&paper, &opts, &[outcome(f)], dir.path(), &output::NoFigures).unwrap();
+        write(outcome(f));
         let md = std::fs::read_to_string(dir.path().join("REPORT.md")).unwrap();
         assert!(md.contains("none applies") && !md.contains("gap %"), "{md}");
     }

@@ -14,6 +14,14 @@ use tidepath_experiments::output::FigureRenderer;
 pub struct ExperimentFigures;
 
 impl FigureRenderer for ExperimentFigures {
+    fn names(&self, scenario: bool) -> Vec<&'static str> {
+        let mut names = vec!["convergence.svg", "boxplot.svg"];
+        if scenario {
+            names.push("paths.svg");
+        }
+        names
+    }
+
     fn render(&self, c: &Comparison, scenario: Option<&Scenario>) -> Result<Vec<(String, String)>> {
         let problems: Vec<ProblemRuns> = c
             .problems

@@ -6,5 +6,5 @@ pub mod geodata;
 pub mod output;
 pub mod plan_json;
 
-pub use output::{check_target, write_atomic, Outputs};
+pub use output::{write_atomic, OutputId, Outputs};
 pub use plan_json::{MissionReport, PlanAbout, PlanFile, PlanReport, PLAN_FORMAT_VERSION};

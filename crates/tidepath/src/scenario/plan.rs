@@ -54,6 +54,15 @@ pub struct PlanRequest {
     pub stop: Option<Arc<AtomicBool>>,
 }
 
+/// A run's pieces, built from a request.
+struct Prepared {
+    planner: Box<dyn crate::planner::Planner>,
+    termination: Termination,
+    limit_source: LimitSource,
+    cost: Box<dyn crate::cost::CostModel>,
+    smoother: Option<Box<dyn crate::smoothing::Smoother>>,
+}
+
 /// Where the wall-time limit of a run came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LimitSource {
@@ -95,16 +104,26 @@ impl Scenario {
         self.plan_with(&planner::registry(), req, observer)
     }
 
-    /// Runs one plan with a planner from `planners` (the built-in table, possibly extended).
-    pub fn plan_with(
-        &self,
-        planners: &Registry<BuildPlanner>,
-        req: &PlanRequest,
-        observer: &mut dyn FnMut(&Progress),
-    ) -> Result<PlanReport> {
+    /// Checks a request without planning: the planner id and parameters, the limits, the
+    /// smoother, the warm start's size, and whether the planner can take this scenario at all
+    /// (e.g. `visibility` needs a 2-D world). Commands call it for every planner they will run
+    /// before they start, so a bad flag never costs a run or leaves an output behind.
+    pub fn check_request(&self, req: &PlanRequest) -> Result<()> {
+        self.check_request_with(&planner::registry(), req)
+    }
+
+    /// [`Scenario::check_request`] against `planners`.
+    pub fn check_request_with(&self, planners: &Registry<BuildPlanner>, req: &PlanRequest) -> Result<()> {
+        let prepared = self.prepare(planners, req)?;
+        let problem = self.problem(prepared.cost.as_ref());
+        prepared.planner.check(&problem)
+    }
+
+    /// Everything a run needs, built and checked.
+    fn prepare(&self, planners: &Registry<BuildPlanner>, req: &PlanRequest) -> Result<Prepared> {
         let id = req.planner.clone().unwrap_or_else(|| self.planner.id.clone());
         let population = req.population.or(self.planner.population);
-        let mut planner = planners.build(&id, self.planner.params.get(&id), population, &self.encoding)?;
+        let planner = planners.build(&id, self.planner.params.get(&id), population, &self.encoding)?;
         let (termination, limit_source) = self.termination(req)?;
         let cost = self.cost_model()?;
         let smoother = match req.smoother.as_deref().or(self.planner.smoother.as_deref()) {
@@ -123,6 +142,17 @@ impl Scenario {
                 ));
             }
         }
+        Ok(Prepared { planner, termination, limit_source, cost, smoother })
+    }
+
+    /// Runs one plan with a planner from `planners` (the built-in table, possibly extended).
+    pub fn plan_with(
+        &self,
+        planners: &Registry<BuildPlanner>,
+        req: &PlanRequest,
+        observer: &mut dyn FnMut(&Progress),
+    ) -> Result<PlanReport> {
+        let Prepared { mut planner, termination, limit_source, cost, smoother } = self.prepare(planners, req)?;
         let problem = self.problem(cost.as_ref());
         let options = SolveOptions {
             run: RunOptions { init: req.init.as_deref(), parallel: req.parallel },
