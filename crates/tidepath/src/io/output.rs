@@ -339,7 +339,7 @@ fn backup_of(target: &Path, folder: &Path, shown: &Path) -> Result<PathBuf> {
         })
         .map_err(|e| Error::io(shown, e))?;
     // Kept on disk: the undo log owns it from here.
-    Ok(b.into_temp_path().keep().map_err(|e| Error::io(shown, e.error))?)
+    b.into_temp_path().keep().map_err(|e| Error::io(shown, e.error))
 }
 
 /// Copies `from` to `to`, which must not exist yet.
