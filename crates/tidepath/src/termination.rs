@@ -90,6 +90,9 @@ pub fn check_count(field: &str, v: u64) -> Result<u64> {
     Ok(v)
 }
 
+/// Shortest wall-time limit: a microsecond.
+pub const MIN_WALL_TIME_S: f64 = 1e-6;
+
 /// A wall-time limit in seconds checked to be positive, finite and at most [`MAX_WALL_TIME_S`].
 pub fn check_wall_time(field: &str, s: f64) -> Result<Duration> {
     if !(s > 0.0 && s.is_finite()) {
@@ -97,6 +100,10 @@ pub fn check_wall_time(field: &str, s: f64) -> Result<Duration> {
     }
     if s > MAX_WALL_TIME_S {
         return Err(Error::input(field, format!("must be at most {MAX_WALL_TIME_S} s (30 days), got {s:?}")));
+    }
+    if s < MIN_WALL_TIME_S {
+        // Shorter than a microsecond rounds to no time at all on some clocks.
+        return Err(Error::input(field, format!("must be at least {MIN_WALL_TIME_S:?} s (a microsecond), got {s:?}")));
     }
     Ok(Duration::from_secs_f64(s))
 }

@@ -16,6 +16,9 @@ pub struct EvalArgs {
     pub plan: PathBuf,
 }
 
+/// Most violations listed per mission: a hostile plan can have hundreds of thousands.
+const MAX_LISTED: usize = 100;
+
 pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
     let plan = PlanFile::read(&args.plan)?;
@@ -52,8 +55,11 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
             println!("{indent}verdict: feasible");
         } else {
             println!("{indent}verdict: NOT feasible, {} violation(s):", m.violations.len());
-            for v in &m.violations {
+            for v in m.violations.iter().take(MAX_LISTED) {
                 println!("{indent}  - {}", v.message);
+            }
+            if m.violations.len() > MAX_LISTED {
+                println!("{indent}  ... and {} more", m.violations.len() - MAX_LISTED);
             }
         }
     }

@@ -130,7 +130,8 @@ fn utc(epoch: Option<DateTime<Utc>>, t: f64) -> Option<String> {
     if !t.is_finite() {
         return None;
     }
-    let at = e + chrono::Duration::milliseconds((t * 1e3).round() as i64);
+    // An arrival beyond the calendar (a hostile plan's time) is left blank, never a panic.
+    let at = e.checked_add_signed(chrono::TimeDelta::try_milliseconds((t * 1e3).round() as i64)?)?;
     Some(at.to_rfc3339_opts(chrono::SecondsFormat::Millis, true))
 }
 

@@ -3,6 +3,7 @@
 
 pub mod export;
 pub mod geodata;
+pub mod input;
 pub mod output;
 pub mod plan_json;
 

@@ -76,7 +76,11 @@ fn resolve(path: &Path) -> std::io::Result<Resolved> {
                         }
                     },
                     Ok(_) => existing = next,
-                    Err(e) if e.kind() == std::io::ErrorKind::NotFound => missing.push(name.to_os_string()),
+                    // Below a file (ENOTDIR) nothing exists either; the check says the file
+                    // is not a folder.
+                    Err(e) if matches!(e.kind(), std::io::ErrorKind::NotFound | std::io::ErrorKind::NotADirectory) => {
+                        missing.push(name.to_os_string())
+                    }
                     Err(e) => return Err(e),
                 }
             }

@@ -270,25 +270,14 @@ pub struct PlanFile {
 
 impl PlanFile {
     pub fn read(path: &std::path::Path) -> Result<Self> {
-        let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
-        if !meta.is_file() {
-            return Err(Error::input(path.display().to_string(), "is not a regular file"));
-        }
-        // A plan of MAX_PLAN_POINTS points is a few MB of JSON; refuse to read far more.
-        const MAX_BYTES: u64 = 64 << 20;
-        if meta.len() > MAX_BYTES {
-            return Err(Error::input(
-                path.display().to_string(),
-                format!("{} bytes is larger than any plan file ({MAX_BYTES} bytes at most)", meta.len()),
-            ));
-        }
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-        Self::parse(&text, &path.display().to_string())
+        let shown = path.display().to_string();
+        let text = super::input::read_text(path, &shown, super::input::MAX_PLAN_BYTES)?;
+        Self::parse(&text, &shown)
     }
 
     pub fn parse(text: &str, source: &str) -> Result<Self> {
         let de = &mut serde_json::Deserializer::from_str(text);
-        let raw: RawPlanFile = serde_path_to_error::deserialize(de).map_err(|e| {
+        let raw: RawPlanFile = serde_path_to_error::deserialize(&mut *de).map_err(|e| {
             let path = e.path().to_string();
             let inner = e.into_inner();
             let field = if path == "." { source.to_string() } else { format!("{source}: {path}") };
@@ -297,7 +286,17 @@ impl PlanFile {
                 format!("{} (line {}, column {})", strip_position(&inner.to_string()), inner.line(), inner.column()),
             )
         })?;
+        // Anything after the JSON object is a damaged or concatenated file, not a plan.
+        de.end().map_err(|e| {
+            Error::input(
+                source,
+                format!("unexpected text after the plan's JSON object (line {}, column {})", e.line(), e.column()),
+            )
+        })?;
         let version = raw.version.unwrap_or(1);
+        if version == 0 {
+            return Err(Error::input(format!("{source}: version"), "must be 1 or more, got 0"));
+        }
         if version > PLAN_FORMAT_VERSION {
             return Err(Error::input(
                 format!("{source}: version"),
@@ -374,6 +373,11 @@ mod tests {
         assert!(e.starts_with("p.json"), "{e}");
         let e = PlanFile::parse(r#"{"version": 2, "missions": [{"waypoints": [[0,0,0],[1,0,NaN]]}]}"#, "p.json");
         assert!(e.is_err());
+        let e = PlanFile::parse(r#"{"waypoints": [[0,0,0],[1,0,0]]} {"x": 1}"#, "p.json").unwrap_err().to_string();
+        assert!(e.starts_with("p.json: unexpected text after the plan's JSON object"), "{e}");
+        assert!(PlanFile::parse("{\"waypoints\": [[0,0,0],[1,0,0]]}\n  \n", "p.json").is_ok());
+        let e = PlanFile::parse(r#"{"version": 0, "waypoints": [[0,0,0],[1,0,0]]}"#, "p.json").unwrap_err().to_string();
+        assert_eq!(e, "p.json: version: must be 1 or more, got 0");
         let e = PlanFile::parse(r#"{"version": 9, "missions": []}"#, "p.json").unwrap_err().to_string();
         assert!(e.contains("newer"), "{e}");
     }

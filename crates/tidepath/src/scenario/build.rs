@@ -17,6 +17,17 @@ use crate::world::{Current, Dims, Obstacle, RegularGrid2, Shape, Terrain, World}
 pub const MAX_MISSIONS: usize = 64;
 /// Most obstacles a scenario may hold; each segment test scales with them.
 pub const MAX_OBSTACLES: usize = 4096;
+/// Most Gaussian peaks, and most vortices: every elevation or current query sums over them
+/// all (the papers use a handful).
+pub const MAX_FEATURES: usize = 4096;
+
+/// Refuses a list of more than [`MAX_FEATURES`] items, naming `field`.
+fn check_features(field: &str, n: usize) -> Result<()> {
+    if n > MAX_FEATURES {
+        return Err(Error::input(field, format!("at most {MAX_FEATURES} entries, got {n}")));
+    }
+    Ok(())
+}
 
 /// A checked scenario, ready to plan on.
 #[derive(Clone, Debug)]
@@ -274,6 +285,7 @@ fn build_terrain(spec: &TerrainSpec, bounds: &Aabb) -> Result<Terrain> {
     Ok(match spec {
         TerrainSpec::None => Terrain::None,
         TerrainSpec::Peaks { base, peaks, ceiling } => {
+            check_features("world.terrain.peaks", peaks.len())?;
             let mut out = Vec::with_capacity(peaks.len());
             for (i, p) in peaks.iter().enumerate() {
                 finite_positive(&format!("world.terrain.peaks[{i}].sigma_x"), p.sigma_x)?;
@@ -399,6 +411,7 @@ fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
         CurrentSpec::None => Current::None,
         CurrentSpec::Uniform { velocity } => Current::Uniform(Vec3::from_array(*velocity)),
         CurrentSpec::Vortices { vortices } => {
+            check_features("world.current.vortices", vortices.len())?;
             let mut out = Vec::with_capacity(vortices.len());
             for (i, v) in vortices.iter().enumerate() {
                 finite_positive(&format!("world.current.vortices[{i}].core_radius"), v.core_radius)?;

@@ -21,8 +21,9 @@ use super::spec::*;
 use crate::error::{Error, Result};
 use crate::geo::GeoFrame;
 use crate::io::geodata::currents::read_currents;
+use crate::io::geodata::currents::MAX_FORECAST_VALUES;
 use crate::io::geodata::netcdf::{read_bathymetry, Positive};
-use crate::io::geodata::{esri_ascii, DataFile, Format, GeoBox, GeoGrid, EMBEDDED};
+use crate::io::geodata::{esri_ascii, name_decimate, DataFile, Format, GeoBox, GeoGrid, EMBEDDED};
 
 /// Elevation (m) given to nodes without data: land, above the sea surface.
 pub const NO_DATA_ELEVATION: f64 = 10.0;
@@ -30,6 +31,11 @@ pub const NO_DATA_ELEVATION: f64 = 10.0;
 /// Most nodes of a resampled metric grid: 4 million (a 2000 x 2000 grid). A finer request is
 /// coarsened to fit, with a warning.
 pub const MAX_GRID_NODES: usize = 4_000_000;
+
+/// Finest and coarsest `resolution` (m) of a resampled grid: a centimetre is finer than any
+/// survey; beyond 1,000 km there is nothing left to resample.
+pub const MIN_RESOLUTION_M: f64 = 0.01;
+pub const MAX_RESOLUTION_M: f64 = 1e6;
 
 /// A spec in metres, with the frame and clock it came from.
 pub(crate) struct Localised {
@@ -83,7 +89,20 @@ fn parse_instant(field: &str, text: &str) -> Result<DateTime<Utc>> {
         .map_err(|_| {
             Error::input(field, format!("`{text}` is not an ISO 8601 UTC instant (e.g. 2025-11-12T06:00:00Z)"))
         })
+        .and_then(|t| {
+            use chrono::Datelike;
+            if (MIN_YEAR..=MAX_YEAR).contains(&t.year()) {
+                Ok(t)
+            } else {
+                Err(Error::input(field, format!("`{text}` is outside the years {MIN_YEAR} to {MAX_YEAR}")))
+            }
+        })
 }
+
+/// The years an epoch or departure may fall in: wide enough for any hindcast or forecast, and
+/// far enough inside the calendar's range that every arrival time can still be written.
+pub const MIN_YEAR: i32 = 1800;
+pub const MAX_YEAR: i32 = 2300;
 
 /// The scenario clock: `world.epoch`, or the earliest ISO departure; ISO departures become
 /// seconds after it.
@@ -211,10 +230,11 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
         }
         let subset = cover(&frame, lo, hi)?;
         let grid = match Format::of(&file, "world.terrain.path")? {
-            Format::NetCdf => read_bathymetry(&file, variable.as_deref(), positive, Some(&subset), decimate)?,
-            Format::EsriAscii => esri_ascii::read(&file, Some(&subset), decimate)?,
-            Format::GeoTiff => crate::io::geodata::geotiff::read(&file, Some(&subset), decimate)?,
-        };
+            Format::NetCdf => read_bathymetry(&file, variable.as_deref(), positive, Some(&subset), decimate),
+            Format::EsriAscii => esri_ascii::read(&file, Some(&subset), decimate),
+            Format::GeoTiff => crate::io::geodata::geotiff::read(&file, Some(&subset), decimate),
+        }
+        .map_err(|e| name_decimate(e, decimate, "world.terrain.decimate", &file.display()))?;
         spec.world.terrain = resample(&grid, &frame, lo, hi, *resolution, warnings)?;
     }
     Ok(frame)
@@ -287,12 +307,13 @@ struct MetricGrid {
 
 impl MetricGrid {
     /// Spacing `resolution`, by default `g`'s own at its middle latitude; coarsened (with a
-    /// warning naming `field`) to stay within [`MAX_GRID_NODES`].
+    /// warning naming `field`) to stay within `max_nodes` (at most [`MAX_GRID_NODES`]).
     fn new(
         g: &GeoGrid,
         frame: &GeoFrame,
         (lo, hi): ([f64; 2], [f64; 2]),
         resolution: Option<f64>,
+        max_nodes: usize,
         field: &str,
         warnings: &mut Vec<String>,
     ) -> Result<Self> {
@@ -303,18 +324,27 @@ impl MetricGrid {
             (dlon * 111_320.0 * lat_mid.to_radians().cos()).min(dlat * 110_540.0)
         };
         let mut spacing = match resolution {
-            Some(r) if r > 0.0 && r.is_finite() => r,
-            Some(r) => return Err(Error::input(field, format!("must be positive, got {r}"))),
-            None => native,
+            Some(r) if (MIN_RESOLUTION_M..=MAX_RESOLUTION_M).contains(&r) => r,
+            Some(r) => {
+                return Err(Error::input(
+                    field,
+                    format!("must be from {MIN_RESOLUTION_M} to {MAX_RESOLUTION_M} m, got {r:?}"),
+                ))
+            }
+            None => native.max(MIN_RESOLUTION_M),
         };
         let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
         let nodes = |sp: f64| ((w / sp).ceil() as usize + 1, (h / sp).ceil() as usize + 1);
         let (mut nx, mut ny) = nodes(spacing);
-        if (nx as f64) * (ny as f64) > MAX_GRID_NODES as f64 {
-            spacing *= ((nx as f64 * ny as f64) / MAX_GRID_NODES as f64).sqrt() * 1.01;
+        let max_nodes = max_nodes.clamp(4, MAX_GRID_NODES);
+        if (nx as f64) * (ny as f64) > max_nodes as f64 {
+            spacing *= ((nx as f64 * ny as f64) / max_nodes as f64).sqrt() * 1.01;
             (nx, ny) = nodes(spacing);
-            warnings
-                .push(format!("{field}: resampled at {spacing:.0} m so the grid stays within {MAX_GRID_NODES} nodes"));
+            while nx * ny > max_nodes && nx * ny > 4 {
+                spacing *= 1.01;
+                (nx, ny) = nodes(spacing);
+            }
+            warnings.push(format!("{field}: resampled at {spacing:.0} m so the grid stays within {max_nodes} nodes"));
         }
         let (dx, dy) = (w / (nx - 1) as f64, h / (ny - 1) as f64);
         let mut lonlat = Vec::with_capacity(nx * ny);
@@ -357,7 +387,7 @@ fn resample(
     resolution: Option<f64>,
     warnings: &mut Vec<String>,
 ) -> Result<TerrainSpec> {
-    let m = MetricGrid::new(g, frame, (lo, hi), resolution, "world.terrain.resolution", warnings)?;
+    let m = MetricGrid::new(g, frame, (lo, hi), resolution, MAX_GRID_NODES, "world.terrain.resolution", warnings)?;
     let mut z = m.sample(g, false);
     let missing = z.iter().filter(|v| v.is_nan()).count();
     if missing > 0 {
@@ -413,7 +443,9 @@ fn load_currents(
     let Some(first) = series.u.first() else {
         return Err(Error::input("world.current.path", format!("`{path}`: no velocity layer inside the box")));
     };
-    let m = MetricGrid::new(first, frame, (lo, hi), resolution, "world.current.resolution", warnings)?;
+    // All time steps share the grid: their product stays within the forecast limit too.
+    let max_nodes = (MAX_FORECAST_VALUES / series.u.len().max(1) as u64) as usize;
+    let m = MetricGrid::new(first, frame, (lo, hi), resolution, max_nodes, "world.current.resolution", warnings)?;
     let water = water_test(&spec.world.terrain);
     let mut gaps: Vec<usize> = Vec::new();
     let (mut us, mut vs) = (Vec::new(), Vec::new());

@@ -38,6 +38,6 @@ pub fn load(name_or_path: &str) -> Result<Scenario> {
             ),
         ));
     }
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    let text = crate::io::input::read_text(path, "SCENARIO", crate::io::input::MAX_SCENARIO_BYTES)?;
     Scenario::from_toml(&text, &path.display().to_string())
 }

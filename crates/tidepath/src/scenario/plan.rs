@@ -33,6 +33,11 @@ pub fn default_time_limit_s() -> Result<f64> {
     }
 }
 
+/// Most pieces of current integration one `eval` may fly (each a current lookup): about a
+/// second of work. A plan from any planner needs far fewer; only a hostile plan file of
+/// long segments in a world with a tiny `model.current_step` comes near.
+pub const MAX_EVAL_PIECES: u64 = 20_000_000;
+
 /// How to run one plan; `None` fields fall back to the scenario's `[planner]` section.
 #[derive(Clone, Debug, Default)]
 pub struct PlanRequest {
@@ -181,6 +186,21 @@ impl Scenario {
             ));
         }
         let cost = self.cost_model()?;
+        // The work of judging a hostile plan is bounded before it starts.
+        let mut pieces = 0u64;
+        for (i, p) in paths.iter().enumerate() {
+            let model = self.mission_model(i);
+            pieces += p.windows(2).map(|w| u64::from(model.validator.pieces_of(w[0].distance(w[1])))).sum::<u64>();
+        }
+        if pieces > MAX_EVAL_PIECES {
+            return Err(Error::input(
+                "plan",
+                format!(
+                    "judging these paths means flying {pieces} pieces of model.current_step = {} m, more than the limit of {MAX_EVAL_PIECES}: use fewer or shorter segments",
+                    self.settings.current_step
+                ),
+            ));
+        }
         Ok(paths
             .iter()
             .enumerate()

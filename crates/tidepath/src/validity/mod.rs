@@ -241,17 +241,13 @@ impl<'a> Validator<'a> {
         let current = &self.world.current;
         match self.settings.travel {
             TravelModel::Crab => {
-                let pieces = match current {
-                    Current::None => {
-                        let t1 = t0 + len / v;
-                        f(Piece { p0: a, p1: b, t0, t1 });
-                        return (t1, 0);
-                    }
-                    Current::Uniform(_) => 1.0,
-                    _ => (len / self.settings.current_step).ceil().clamp(1.0, MAX_PIECES),
-                };
-                let n = pieces as u32;
-                let step = len / pieces;
+                if let Current::None = current {
+                    let t1 = t0 + len / v;
+                    f(Piece { p0: a, p1: b, t0, t1 });
+                    return (t1, 0);
+                }
+                let n = self.pieces_of(len);
+                let step = len / n as f64;
                 let (mut t, mut blocked) = (t0, 0);
                 let mut p0 = a;
                 for k in 0..n {
@@ -276,6 +272,20 @@ impl<'a> Validator<'a> {
                 f(Piece { p0: a, p1: b, t0, t1: t0 + dt });
                 (t0 + dt, 0)
             }
+        }
+    }
+
+    /// How many pieces a segment of length `len` is flown in (crab model): one in still water
+    /// or a uniform current, else one per `current_step`, at most [`MAX_PIECES`]. A segment
+    /// longer than the domain's diagonal must leave the domain (a violation whatever its clock)
+    /// and is flown as one piece, so a hostile plan of far-away waypoints costs no more to
+    /// judge than a short one.
+    #[inline]
+    pub fn pieces_of(&self, len: f64) -> u32 {
+        match self.world.current {
+            Current::None | Current::Uniform(_) => 1,
+            _ if len > self.world.bounds.size().length() => 1,
+            _ => (len / self.settings.current_step).ceil().clamp(1.0, MAX_PIECES) as u32,
         }
     }
 

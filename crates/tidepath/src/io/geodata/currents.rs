@@ -8,12 +8,18 @@
 use chrono::{DateTime, Utc};
 use netcdf_reader::{NcFile, NcVariable};
 
-use super::netcdf::{open, Layout};
+use super::netcdf::{check_axis, open, Layout, MAX_AXIS};
 use super::{DataFile, GeoBox, GeoGrid};
 use crate::error::{Error, Result};
 
 /// Most time steps read from one file: a year of hourly fields.
 pub const MAX_TIMES: usize = 9000;
+
+/// Most values of one velocity component a forecast may hold inside the box, over all its
+/// time steps: 2^26 (512 MiB per component as f64). Each of the other limits holds alone, but
+/// their product does not: 9,000 steps on 201 x 201 nodes would be 7.9 GB. Checked from the
+/// header before any field is read.
+pub const MAX_FORECAST_VALUES: u64 = 1 << 26;
 
 const U_NAMES: &[&str] = &["uo", "water_u", "u", "uvel", "eastward_sea_water_velocity"];
 const V_NAMES: &[&str] = &["vo", "water_v", "v", "vvel", "northward_sea_water_velocity"];
@@ -75,6 +81,10 @@ pub fn read_currents(
                     .ok_or_else(|| {
                         Error::input(what.clone(), format!("time axis `{}` has no `units ... since ...`", c.name()))
                     })?;
+                let steps = c.num_elements().unwrap_or(u64::MAX);
+                if steps > MAX_TIMES as u64 {
+                    return Err(Error::input(what, format!("{steps} time steps, more than the limit of {MAX_TIMES}")));
+                }
                 let values =
                     nc.read_variable_as_f64(c.name()).map_err(|e| Error::input(what.clone(), e.to_string()))?;
                 let values: Vec<f64> = values.iter().copied().collect();
@@ -92,6 +102,7 @@ pub fn read_currents(
                 time = Some((k, times));
             }
             CfAxisType::Z => {
+                check_axis(c, MAX_AXIS, &what)?;
                 let values =
                     nc.read_variable_as_f64(c.name()).map_err(|e| Error::input(what.clone(), e.to_string()))?;
                 let up = c.attribute("positive").and_then(|a| a.value.as_string()).is_some_and(|p| p.trim() == "up");
@@ -111,6 +122,17 @@ pub fn read_currents(
         None => (None, Vec::new()),
     };
     let steps = times.len().max(1);
+    let b = layout.box_runs(subset, decimate, &what)?;
+    let held = steps as u64 * b.nx as u64 * b.ny as u64;
+    if held > MAX_FORECAST_VALUES {
+        return Err(Error::input(
+            what,
+            format!(
+                "the box holds {steps} time steps x {} x {} nodes = {held} values per component, more than the limit of {MAX_FORECAST_VALUES}: use a shorter forecast or a smaller box",
+                b.nx, b.ny
+            ),
+        ));
+    }
     let mut out = CurrentSeries { times, u: Vec::new(), v: Vec::new(), depth: level.map(|l| l.2) };
     for k in 0..steps {
         let mut fixed = Vec::new();

@@ -32,6 +32,7 @@ pub fn read(file: &DataFile, subset: Option<&GeoBox>, decimate: usize) -> Result
     let what = file.display();
     match file {
         DataFile::Path(p) => {
+            crate::io::input::regular_file(p, &what)?;
             let f = std::fs::File::open(p).map_err(|e| Error::io(p, e))?;
             read_from(std::io::BufReader::new(f), &what, subset, decimate)
         }

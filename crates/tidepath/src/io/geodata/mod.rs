@@ -115,6 +115,22 @@ impl GeoBox {
     }
 }
 
+/// How every reader's "too few nodes" error begins, so that a scenario can name its
+/// `decimate` setting when decimation is what left too few.
+pub const TOO_FEW_NODES: &str = "needs at least 2 x 2 nodes";
+
+/// `e`, renamed to the `decimate` setting `field` when decimation by `decimate` left fewer than
+/// 2 x 2 nodes of `file`: the setting, not the file, is what to change.
+pub fn name_decimate(e: Error, decimate: usize, field: &str, file: &str) -> Error {
+    match e {
+        Error::Input { message, .. } if decimate > 1 && message.starts_with(TOO_FEW_NODES) => Error::input(
+            field,
+            format!("{decimate} leaves too few nodes of `{file}` inside the box ({message}); use a smaller value"),
+        ),
+        other => other,
+    }
+}
+
 /// Values on a longitude/latitude lattice: node `(i, j)` is at `(lon[i], lat[j])` and holds
 /// `values[j * lon.len() + i]`; `NaN` where the file has no data (fill, missing or masked).
 ///
@@ -131,7 +147,7 @@ impl GeoGrid {
     /// Checks the axes and sizes; `what` names the file or variable for error messages.
     pub fn new(lon: Vec<f64>, lat: Vec<f64>, values: Vec<f64>, what: &str) -> Result<Self> {
         if lon.len() < 2 || lat.len() < 2 {
-            return Err(Error::input(what, format!("needs at least 2 x 2 nodes, got {} x {}", lon.len(), lat.len())));
+            return Err(Error::input(what, format!("{TOO_FEW_NODES}, got {} x {}", lon.len(), lat.len())));
         }
         for (name, axis) in [("longitude", &lon), ("latitude", &lat)] {
             if let Some(k) = axis.windows(2).position(|w| w[1] <= w[0] || !w[0].is_finite() || !w[1].is_finite()) {

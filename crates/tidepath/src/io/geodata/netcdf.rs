@@ -24,6 +24,23 @@ const FILL_MAGNITUDE: f64 = 1e30;
 /// `decimate`; the error says so.
 pub const MAX_VALUES: u64 = 1 << 28;
 
+/// Most nodes a coordinate axis (longitude, latitude, depth) may have: 2^24, far beyond the
+/// finest global grid (GEBCO's 86,400 longitudes); checked from the header before reading, so a
+/// crafted file cannot make a coordinate read allocate gigabytes.
+pub const MAX_AXIS: u64 = 1 << 24;
+
+/// Refuses a one-dimensional coordinate variable longer than `limit` before it is read.
+pub(crate) fn check_axis(c: &NcVariable, limit: u64, what: &str) -> Result<()> {
+    let n = c.num_elements().unwrap_or(u64::MAX);
+    if n > limit {
+        return Err(Error::input(
+            what,
+            format!("coordinate `{}` has {n} values, more than the limit of {limit}", c.name()),
+        ));
+    }
+    Ok(())
+}
+
 /// Standard names and variable names taken for elevation (up positive) when the user names no
 /// variable, and those taken for depth (down positive).
 const ELEVATION_NAMES: &[&str] = &[
@@ -53,9 +70,7 @@ pub enum Positive {
 pub fn open(file: &DataFile) -> Result<NcFile> {
     let opened = match file {
         DataFile::Path(path) => {
-            if let Err(e) = std::fs::metadata(path) {
-                return Err(Error::io(path, e));
-            }
+            crate::io::input::regular_file(path, &file.display())?;
             NcFile::open(path)
         }
         DataFile::Embedded { bytes, .. } => NcFile::from_bytes(bytes),
@@ -178,6 +193,7 @@ impl Layout {
             }
         };
         let read = |c: &NcVariable| -> Result<Vec<f64>> {
+            check_axis(c, MAX_AXIS, what)?;
             let a = file
                 .read_variable_unpacked(c.name())
                 .map_err(|e| Error::input(what, format!("coordinate `{}`: {e}", c.name())))?;
@@ -209,39 +225,7 @@ impl Layout {
         what: &str,
     ) -> Result<GeoGrid> {
         let decimate = decimate.max(1);
-        // Longitude index runs inside the box (at most two on a monotonic axis of <= 360 degrees).
-        let kept_x: Vec<usize> = (0..self.lon.len()).filter(|&i| inside_lon(subset, self.lon[i])).collect();
-        let kept_y: Vec<usize> = (0..self.lat.len())
-            .filter(|&j| subset.is_none_or(|b| (b.south..=b.north).contains(&self.lat[j])))
-            .collect();
-        // One more node beyond each edge, so every point of the box lies between nodes that
-        // were read (interpolation needs the bracketing nodes).
-        let (nlon, nlat) = (self.lon.len(), self.lat.len());
-        let mut runs: Vec<(usize, usize)> = Vec::new();
-        for (a, b) in runs_of(&kept_x) {
-            let r = if subset.is_some() { (a.saturating_sub(1), (b + 1).min(nlon - 1)) } else { (a, b) };
-            match runs.last_mut() {
-                Some(last) if r.0 <= last.1 + 1 => last.1 = last.1.max(r.1),
-                _ => runs.push(r),
-            }
-        }
-        let (y0, y1) = match (kept_y.first(), kept_y.last()) {
-            (Some(&a), Some(&b)) if subset.is_some() => (a.saturating_sub(1), (b + 1).min(nlat - 1)),
-            (Some(&a), Some(&b)) => (a, b),
-            _ => return Err(Error::input(what, "no latitude of the file lies inside the requested box")),
-        };
-        if runs.is_empty() {
-            return Err(Error::input(what, "no longitude of the file lies inside the requested box"));
-        }
-        let ny = (y1 - y0) / decimate + 1;
-        let nx: usize = runs.iter().map(|&(a, b)| (b - a) / decimate + 1).sum();
-        let total = nx as u64 * ny as u64;
-        if total > MAX_VALUES {
-            return Err(Error::input(
-                what,
-                format!("the box holds {nx} x {ny} values, more than the limit of {MAX_VALUES}: use a smaller box or decimate"),
-            ));
-        }
+        let BoxRuns { runs, y0, y1, nx, ny } = self.box_runs(subset, decimate, what)?;
         let mut values = vec![f64::NAN; nx * ny];
         let mut lon = Vec::with_capacity(nx);
         let mut col = 0;
@@ -314,6 +298,55 @@ impl Layout {
         }
         reorder_by_lon(lon, lat, values, what)
     }
+
+    /// The index runs of the box (with one node beyond each edge) and the size of the grid
+    /// they make, checked against [`MAX_VALUES`] before anything is read.
+    pub(crate) fn box_runs(&self, subset: Option<&GeoBox>, decimate: usize, what: &str) -> Result<BoxRuns> {
+        let decimate = decimate.max(1);
+        // Longitude index runs inside the box (at most two on a monotonic axis of <= 360 degrees).
+        let kept_x: Vec<usize> = (0..self.lon.len()).filter(|&i| inside_lon(subset, self.lon[i])).collect();
+        let kept_y: Vec<usize> = (0..self.lat.len())
+            .filter(|&j| subset.is_none_or(|b| (b.south..=b.north).contains(&self.lat[j])))
+            .collect();
+        // One more node beyond each edge, so every point of the box lies between nodes that
+        // were read (interpolation needs the bracketing nodes).
+        let (nlon, nlat) = (self.lon.len(), self.lat.len());
+        let mut runs: Vec<(usize, usize)> = Vec::new();
+        for (a, b) in runs_of(&kept_x) {
+            let r = if subset.is_some() { (a.saturating_sub(1), (b + 1).min(nlon - 1)) } else { (a, b) };
+            match runs.last_mut() {
+                Some(last) if r.0 <= last.1 + 1 => last.1 = last.1.max(r.1),
+                _ => runs.push(r),
+            }
+        }
+        let (y0, y1) = match (kept_y.first(), kept_y.last()) {
+            (Some(&a), Some(&b)) if subset.is_some() => (a.saturating_sub(1), (b + 1).min(nlat - 1)),
+            (Some(&a), Some(&b)) => (a, b),
+            _ => return Err(Error::input(what, "no latitude of the file lies inside the requested box")),
+        };
+        if runs.is_empty() {
+            return Err(Error::input(what, "no longitude of the file lies inside the requested box"));
+        }
+        let ny = (y1 - y0) / decimate + 1;
+        let nx: usize = runs.iter().map(|&(a, b)| (b - a) / decimate + 1).sum();
+        let total = nx as u64 * ny as u64;
+        if total > MAX_VALUES {
+            return Err(Error::input(
+                what,
+                format!("the box holds {nx} x {ny} values, more than the limit of {MAX_VALUES}: use a smaller box or decimate"),
+            ));
+        }
+        Ok(BoxRuns { runs, y0, y1, nx, ny })
+    }
+}
+
+/// Index runs of a box: longitude runs (first, last), the latitude range, and the grid size.
+pub(crate) struct BoxRuns {
+    runs: Vec<(usize, usize)>,
+    y0: usize,
+    y1: usize,
+    pub(crate) nx: usize,
+    pub(crate) ny: usize,
 }
 
 /// Maximal runs of consecutive indices, as (first, last).
