@@ -229,6 +229,10 @@ struct Stats {
 /// maybe the outputs staged to a hostile target.
 fn case(seed: u64, corpus: &[String], dir: &std::path::Path, stats: &mut Stats) {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    if rng.random_range(0..20) == 0 {
+        special_scenario_file(dir, &mut rng);
+        return;
+    }
     let base = &corpus[rng.random_range(0..corpus.len())];
     let text = match rng.random_range(0..10) {
         0 => base.clone(),
@@ -271,34 +275,92 @@ fn case(seed: u64, corpus: &[String], dir: &std::path::Path, stats: &mut Stats) 
             stats.evaluated += 1;
         }
     }
-    // Outputs: a hostile target must leave the folder exactly as it was.
+    // Outputs: a hostile target must leave the folder exactly as it was, the user's files in
+    // `keep/` included, whatever `..` steps through folders that do not exist.
     let before = listing(dir);
     let json_path = dir.join(format!("p{seed}.json"));
-    let target = match rng.random_range(0..4) {
-        0 => dir.join("missing-folder/x.svg"),
-        1 => dir.to_path_buf(),
-        2 => dir.join("link.svg"),
-        _ => dir.join(format!("p{seed}.svg")),
+    // (folder, file name, where the file lands if written)
+    let keep = dir.join("keep");
+    let (folder, name, lands) = match rng.random_range(0..9) {
+        0 => (dir.join("missing-folder"), "x.svg".to_string(), dir.join("missing-folder/x.svg")),
+        1 => (dir.to_path_buf(), String::new(), dir.to_path_buf()),
+        2 => (dir.to_path_buf(), "link.svg".to_string(), dir.join("link.svg")),
+        3 => (dir.join(format!("new{seed}/..")), format!("p{seed}.svg"), dir.join(format!("p{seed}.svg"))),
+        4 => {
+            let n = ["results.json", "blocked.svg"][rng.random_range(0..2)];
+            (dir.join(format!("new{seed}/../keep")), n.to_string(), keep.join(n))
+        }
+        5 => (dir.join(format!("a{seed}/b/../../keep")), "blocked.svg".to_string(), keep.join("blocked.svg")),
+        6 => {
+            let d = dir.join(format!("made{seed}/deeper"));
+            (d.clone(), format!("p{seed}.svg"), d.join(format!("p{seed}.svg")))
+        }
+        _ => (dir.to_path_buf(), format!("p{seed}.svg"), dir.join(format!("p{seed}.svg"))),
     };
-    // As the CLI does: stage both, commit; on an error the set is dropped with its temporaries.
+    let as_file = rng.random_range(0..2) == 0 || name.is_empty();
+    // As the CLI does: declare both, fill, commit; a failure anywhere leaves nothing.
     let write = || -> tidepath::Result<()> {
         let mut out = Outputs::new();
         out.stage("--out", &json_path, report.to_json().as_bytes())?;
-        out.stage("--plot", &target, b"<svg/>")?;
+        if as_file {
+            out.stage("--plot", &folder.join(&name), b"<svg/>")?;
+        } else {
+            out.stage_in("--plot", &folder, &name, b"<svg/>")?;
+        }
         out.commit()
     };
-    let ok = write().is_ok();
-    if ok {
+    if write().is_ok() {
         stats.outputs += 1;
         std::fs::remove_file(&json_path).unwrap();
-        std::fs::remove_file(&target).unwrap();
+        std::fs::remove_file(&lands).unwrap();
+        // Folders the commit made (and only those) go too.
+        for made in lands.ancestors().skip(1).take_while(|p| *p != dir) {
+            let rel = format!("{}/", made.strip_prefix(dir).unwrap().display());
+            if !before.contains(&rel) {
+                std::fs::remove_dir(made).unwrap();
+            }
+        }
     }
-    assert_eq!(listing(dir), before, "case {seed}: a failed write left files behind");
+    assert_eq!(listing(dir), before, "case {seed}: a write changed the folder");
 }
 
+/// A scenario path that is no scenario file: a FIFO (which would block a reader forever),
+/// `/dev/zero`, a folder, a sparse file far beyond the size limit. Loading must refuse it at
+/// once, naming it.
+fn special_scenario_file(dir: &std::path::Path, rng: &mut ChaCha8Rng) {
+    let special = dir.join("special");
+    std::fs::create_dir_all(&special).unwrap();
+    let path = special.join(format!("s{}.toml", rng.random::<u32>()));
+    match rng.random_range(0..4) {
+        0 => assert!(std::process::Command::new("mkfifo").arg(&path).status().is_ok_and(|s| s.success())),
+        1 => std::os::unix::fs::symlink("/dev/zero", &path).unwrap(),
+        2 => std::fs::create_dir(&path).unwrap(),
+        _ => std::fs::File::create(&path)
+            .unwrap()
+            .set_len([65u64 << 20, 1 << 30, 3 << 30][rng.random_range(0..3)])
+            .unwrap(),
+    }
+    let e = tidepath::scenario::load(path.to_str().unwrap()).unwrap_err().to_string();
+    assert!(e.starts_with("SCENARIO:") && !e.contains('\n'), "{e}");
+    std::fs::remove_dir_all(&special).unwrap();
+}
+
+/// Every entry under `dir`, recursively, with the contents of small files.
 fn listing(dir: &std::path::Path) -> Vec<String> {
-    let mut v: Vec<String> =
-        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    let mut v = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        let meta = std::fs::symlink_metadata(&p).unwrap();
+        let name = p.file_name().unwrap().to_string_lossy().into_owned();
+        if meta.is_dir() {
+            v.push(format!("{name}/"));
+            v.extend(listing(&p).into_iter().map(|c| format!("{name}/{c}")));
+        } else if meta.is_file() {
+            v.push(format!("{name}: {}", std::fs::read_to_string(&p).unwrap_or_default()));
+        } else {
+            v.push(name);
+        }
+    }
     v.sort();
     v
 }
@@ -315,6 +377,8 @@ fn fuzz_scenarios_plans_and_outputs() {
     let corpus = corpus();
     let dir = tempfile::tempdir().unwrap();
     std::os::unix::fs::symlink("/dev/null", dir.path().join("link.svg")).unwrap();
+    std::fs::create_dir_all(dir.path().join("keep/blocked.svg")).unwrap();
+    std::fs::write(dir.path().join("keep/thesis.tex"), "the user's own file").unwrap();
     let current = Arc::new(AtomicU64::new(u64::MAX));
     let watched = current.clone();
     let started = Arc::new(std::sync::Mutex::new(Instant::now()));

@@ -2,7 +2,10 @@
 //! download, a disk error, a hostile file). The readers must answer with an input error or a
 //! grid, never panic, abort or hang. Mutations of the committed fixtures (NetCDF classic,
 //! 64-bit offset, CDF-5 and NetCDF-4, GeoTIFF, ESRI ASCII): flipped bytes, truncation, size
-//! fields overwritten with extreme integers, spliced ranges.
+//! fields overwritten with extreme integers, spliced ranges. One case in eight is a hostile
+//! source instead: a special file (FIFO, `/dev/zero`, a folder, a sparse file of up to 20 GB)
+//! under a data file's name, an ESRI header declaring extreme sizes over little data, or a
+//! NetCDF forecast whose header declares up to billions of values it does not hold.
 //!
 //! Same knobs as the scenario fuzzer: `TIDEPATH_FUZZ_CASES` (default 300),
 //! `TIDEPATH_FUZZ_SEED`, `TIDEPATH_FUZZ_FROM`. A failing case prints its seed and number.
@@ -16,6 +19,8 @@ use rand_chacha::ChaCha8Rng;
 use tidepath::io::geodata::currents::read_currents;
 use tidepath::io::geodata::netcdf::read_bathymetry;
 use tidepath::io::geodata::{esri_ascii, geotiff, DataFile, GeoBox};
+
+mod common;
 
 const FIXTURES: &[&str] = &[
     "bathy_classic.nc",
@@ -112,6 +117,45 @@ fn read_all(name: &str, path: &std::path::Path) -> usize {
     ok
 }
 
+/// Writes a hostile source for a file named `name` at `path`: a special file, a sparse file, or
+/// a header declaring sizes the file does not hold.
+fn hostile_source(name: &str, path: &std::path::Path, rng: &mut ChaCha8Rng) {
+    let _ = std::fs::remove_file(path);
+    let _ = std::fs::remove_dir(path);
+    match rng.random_range(0..6) {
+        0 => {
+            let made = std::process::Command::new("mkfifo").arg(path).status().is_ok_and(|s| s.success());
+            assert!(made, "mkfifo");
+        }
+        1 => std::os::unix::fs::symlink("/dev/zero", path).unwrap(),
+        2 => std::fs::create_dir(path).unwrap(),
+        3 => {
+            let len = [0u64, 1, 4096, 1 << 30, 20_000_000_000][rng.random_range(0..5)];
+            std::fs::File::create(path).unwrap().set_len(len).unwrap();
+        }
+        4 if name.ends_with(".asc") => {
+            let side = |rng: &mut ChaCha8Rng| EXTREMES[rng.random_range(0..EXTREMES.len())].min(u64::MAX / 2);
+            let (nx, ny) = (side(rng), side(rng));
+            let mut text = format!("ncols {nx}\nnrows {ny}\nxllcorner -124.5\nyllcorner 48\ncellsize 0.001\n");
+            for _ in 0..rng.random_range(0..4) {
+                text += "1 2 3 4 5 6 7 8\n";
+            }
+            std::fs::write(path, text).unwrap();
+        }
+        _ => std::fs::write(path, forecast(rng)).unwrap(),
+    }
+}
+
+/// A forecast header declaring random, often enormous, sizes.
+fn forecast(rng: &mut ChaCha8Rng) -> Vec<u8> {
+    let pick = |rng: &mut ChaCha8Rng, list: &[u32]| list[rng.random_range(0..list.len())];
+    common::cdf1::forecast_bomb(
+        pick(rng, &[1, 2, 24, 9000, 9001, 20_000]),
+        pick(rng, &[2, 3, 201, 1001, 5000]),
+        pick(rng, &[2, 3, 201, 1001, 5000]),
+    )
+}
+
 #[test]
 fn corrupted_data_files_give_errors_not_panics() {
     let cases = env_u64("TIDEPATH_FUZZ_CASES", 300);
@@ -128,9 +172,14 @@ fn corrupted_data_files_give_errors_not_panics() {
     for case in from..from + cases {
         let mut rng = ChaCha8Rng::seed_from_u64(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ case);
         let (name, bytes) = &originals[rng.random_range(0..originals.len())];
-        let mutated = mutate(bytes, &mut rng);
         let path = tmp.path().join(name);
-        std::fs::write(&path, &mutated).unwrap();
+        if rng.random_range(0..8) == 0 {
+            hostile_source(name, &path, &mut rng);
+        } else {
+            let _ = std::fs::remove_dir(&path);
+            let _ = std::fs::remove_file(&path);
+            std::fs::write(&path, mutate(bytes, &mut rng)).unwrap();
+        }
         let t0 = Instant::now();
         let outcome = catch_unwind(AssertUnwindSafe(|| read_all(name, &path)));
         let took = t0.elapsed();
@@ -138,7 +187,9 @@ fn corrupted_data_files_give_errors_not_panics() {
         if outcome.is_err() || took > SLOW {
             let what = if outcome.is_err() { "panicked" } else { "took too long" };
             let keep = tmp.path().join(format!("case-{case}-{name}"));
-            let _ = std::fs::copy(&path, &keep);
+            if path.is_file() {
+                let _ = std::fs::copy(&path, &keep);
+            }
             failures.push(format!("seed {seed} case {case} ({name}): {what} after {took:?}"));
             if failures.len() >= 10 {
                 break;
