@@ -29,6 +29,18 @@ impl Limits<'_> {
         Self::default()
     }
 
+    /// The stop flag or the deadline, polled now: for loops that count no expansions (graph
+    /// construction), which call it every few dozen steps.
+    pub fn interrupted(&self) -> Option<StopReason> {
+        if self.stop.is_some_and(|f| f.load(Ordering::Relaxed)) {
+            return Some(StopReason::StopFlag);
+        }
+        if self.deadline.is_some_and(|d| Instant::now() >= d) {
+            return Some(StopReason::Deadline);
+        }
+        None
+    }
+
     /// Checks the limits before expansion number `expansions + 1`.
     #[inline]
     pub(crate) fn check(&self, expansions: u64) -> Option<StopReason> {

@@ -66,6 +66,10 @@ pub struct Termination {
     pub target_cost: Option<f64>,
     /// Raised by the caller to stop the run early; the run reports [`StopReason::Cancelled`].
     pub stop: Option<Arc<AtomicBool>>,
+    /// When the run's one clock started. The planner layer's `solve` sets it once, so every stage
+    /// of a run (reachability, rasters, the planner and its sub-searches, the smoother)
+    /// measures its wall time from the same instant and no stage restarts the clock.
+    pub started: Option<Instant>,
 }
 
 impl PartialEq for Termination {
@@ -158,9 +162,60 @@ impl Termination {
         Ok(())
     }
 
-    /// Starts the clock.
+    /// The run's watch: on the run's clock when it has started, else on a clock starting now.
     pub fn start(&self) -> Watch<'_> {
-        Watch { limits: self, started: Instant::now() }
+        Watch { limits: self, started: self.started.unwrap_or_else(Instant::now) }
+    }
+
+    /// This termination with its clock started now, unless it already runs.
+    pub fn started_now(&self) -> Self {
+        let mut t = self.clone();
+        t.started.get_or_insert_with(Instant::now);
+        t
+    }
+
+    /// The instant the wall-time limit passes, on the run's clock.
+    pub fn deadline(&self) -> Option<Instant> {
+        let start = self.started.unwrap_or_else(Instant::now);
+        self.wall_time.and_then(|d| start.checked_add(d))
+    }
+
+    /// The cheap poll every loop of a run makes: `Some` once the stop flag is raised or the
+    /// deadline has passed (count limits are each planner's own to check).
+    pub fn interrupted(&self) -> Option<StopReason> {
+        if self.stop.as_ref().is_some_and(|f| f.load(Ordering::Relaxed)) {
+            return Some(StopReason::Cancelled);
+        }
+        if self.deadline().is_some_and(|d| Instant::now() >= d) {
+            return Some(StopReason::WallTime);
+        }
+        None
+    }
+
+    /// A termination for one stage of a run that may use `fraction` of the time left: the
+    /// stage's deadline comes at that share of what remains, on the same clock, so a composite
+    /// planner splits its budget and never restarts it. Stop flag and counts are kept.
+    pub fn share_of_remaining(&self, fraction: f64) -> Self {
+        let mut t = self.started_now();
+        if let (Some(start), Some(limit)) = (t.started, t.wall_time) {
+            let used = start.elapsed().min(limit);
+            t.wall_time = Some(used + (limit - used).mul_f64(fraction.clamp(0.0, 1.0)));
+        }
+        t
+    }
+
+    /// The limits the search crate polls: the stop flag and the deadline, on the run's clock.
+    pub fn search_limits(&self, max_expansions: Option<u64>) -> tidepath_search::Limits<'_> {
+        tidepath_search::Limits { max_expansions, stop: self.stop.as_deref(), deadline: self.deadline() }
+    }
+}
+
+/// Maps the search crate's stop reasons to the run's.
+pub fn from_search_stop(r: tidepath_search::StopReason) -> StopReason {
+    match r {
+        tidepath_search::StopReason::MaxExpansions => StopReason::MaxExpansions,
+        tidepath_search::StopReason::StopFlag => StopReason::Cancelled,
+        tidepath_search::StopReason::Deadline => StopReason::WallTime,
     }
 }
 

@@ -194,8 +194,8 @@ fn a_toy_planner_needs_only_the_trait_and_a_table_line() {
     assert_eq!(r.missions.len(), 2);
 }
 
-/// A raised stop flag ends a run at its next check, reports `cancelled`, and still returns the
-/// best path so far.
+/// A stop flag raised before the run ends it before any evaluation: `cancelled`, nothing
+/// spent, no path. Raised mid-run it keeps the best path so far.
 #[test]
 fn a_stop_flag_cancels_a_run() {
     let s = load("demo");
@@ -205,9 +205,21 @@ fn a_stop_flag_cancels_a_run() {
     req.stop = Some(flag.clone());
     let r = s.plan(&req, &mut |_| {}).unwrap();
     assert_eq!(r.stop_reason, StopReason::Cancelled);
-    assert_eq!(r.iterations, 0);
-    assert_eq!(r.missions[0].waypoints.len(), s.encoding.waypoints + 2);
+    assert_eq!((r.iterations, r.evaluations), (0, 0));
+    assert!(r.missions[0].waypoints.is_empty());
     flag.store(false, Ordering::Relaxed);
+    let raiser = {
+        let flag = flag.clone();
+        std::thread::spawn(move || {
+            std::thread::sleep(std::time::Duration::from_millis(100));
+            flag.store(true, Ordering::Relaxed);
+        })
+    };
+    let r = s.plan(&req, &mut |_| {}).unwrap();
+    raiser.join().unwrap();
+    assert_eq!(r.stop_reason, StopReason::Cancelled);
+    assert!(r.iterations > 0 && r.iterations < 1_000_000);
+    assert_eq!(r.missions[0].waypoints.len(), s.encoding.waypoints + 2);
 }
 
 /// A warm start is in the first population, so the result is never worse than the path given.

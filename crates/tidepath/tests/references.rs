@@ -262,7 +262,7 @@ fn reachability_never_denies_a_path_the_conservative_search_finds() {
                 tidepath::planner::grid_search::GridParams { cells: 80, ..Default::default() },
                 false,
             );
-            let out = search.search(&problem, 0, &tidepath_search::Limits::none()).unwrap();
+            let out = search.search(&problem, 0, &tidepath::termination::Termination::default(), None).unwrap();
             assert!(out.path.is_empty(), "case {case}: unreachable, yet the conservative search found a path");
         }
     }

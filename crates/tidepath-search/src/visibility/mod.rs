@@ -40,6 +40,7 @@
 
 mod geometry;
 mod route;
+use crate::outcome::{Limits, StopReason};
 
 use geometry::{
     bitangent_angles, dist, in_rect, on_circle, point_tangent_angles, segment_enters_circle, segment_enters_polygon,
@@ -115,6 +116,31 @@ pub enum VisError {
     /// Too many obstacles for the quadratic construction.
     #[error("scene would need {0} graph nodes (limit {max})", max = MAX_NODES)]
     TooLarge(usize),
+    /// The stop flag or the deadline of the [`Limits`] ended the construction or the search.
+    #[error("stopped before the graph was searched ({0:?})")]
+    Stopped(StopReason),
+}
+
+/// How many segment or arc tests the graph construction makes between two polls of its
+/// limits: each test scans every obstacle, so this keeps a poll within milliseconds.
+const POLL_TESTS: u32 = 64;
+
+/// Polls `limits` every [`POLL_TESTS`] calls.
+struct Poll<'a, 'b> {
+    limits: &'a Limits<'b>,
+    count: u32,
+}
+
+impl Poll<'_, '_> {
+    fn tick(&mut self) -> Result<(), VisError> {
+        self.count += 1;
+        if self.count % POLL_TESTS == 0 {
+            if let Some(r) = self.limits.interrupted() {
+                return Err(VisError::Stopped(r));
+            }
+        }
+        Ok(())
+    }
 }
 
 /// One piece of a path.
@@ -248,7 +274,21 @@ impl Graph<'_> {
 /// `Ok(None)`: proved that no path exists (the graph is complete, so the
 /// search cannot give up early).
 pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) -> Result<Option<VisPath>, VisError> {
+    shortest_path_within(scene, start, goal, arc_step, &Limits::none())
+}
+
+/// [`shortest_path`] within `limits`: the stop flag and the deadline are polled during the
+/// graph's construction (quadratic in the obstacles) and its search; when either fires the
+/// answer is [`VisError::Stopped`] (nothing was proved).
+pub fn shortest_path_within(
+    scene: &Scene,
+    start: Point,
+    goal: Point,
+    arc_step: f64,
+    limits: &Limits<'_>,
+) -> Result<Option<VisPath>, VisError> {
     validate(scene, start, goal, arc_step)?;
+    let mut poll = Poll { limits, count: 0 };
     let polys: Vec<Vec<Point>> = scene.polygons.iter().map(|p| ccw(&p.vertices)).collect();
     let scale = scene
         .circles
@@ -294,6 +334,7 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
     // Point–point segments.
     for a in 0..points {
         for b in a + 1..points {
+            poll.tick()?;
             let (pa, pb) = (g.nodes[a].pos, g.nodes[b].pos);
             g.try_segment((pa, Some(a), None), (pb, Some(b), None));
         }
@@ -302,6 +343,7 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
     for p in 0..points {
         let pos = g.nodes[p].pos;
         for (ci, c) in circles.iter().enumerate() {
+            poll.tick()?;
             let d = dist(pos, c.centre);
             if d < c.radius - eps {
                 continue; // cannot happen for free points; defensive
@@ -321,6 +363,7 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
     // Circle–circle bitangents.
     for i in 0..circles.len() {
         for j in i + 1..circles.len() {
+            poll.tick()?;
             for (ai, aj) in bitangent_angles(&circles[i], &circles[j], eps) {
                 g.try_segment(
                     (on_circle(&circles[i], ai), None, Some((i, ai))),
@@ -336,6 +379,7 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
         let m = pts.len();
         if m >= 2 {
             for k in 0..m {
+                poll.tick()?;
                 let (a0, n0) = pts[k];
                 let (a1, n1) = pts[(k + 1) % m];
                 let sweep = if k + 1 < m { a1 - a0 } else { a1 + std::f64::consts::TAU - a0 };
@@ -346,6 +390,9 @@ pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) ->
             }
         }
         g.on_circle[ci] = pts;
+    }
+    if let Some(r) = limits.interrupted() {
+        return Err(VisError::Stopped(r));
     }
     Ok(route::dijkstra(&g, 0, 1).map(|(length, r)| route::build_path(&g, length, &r, arc_step)))
 }

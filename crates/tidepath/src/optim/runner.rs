@@ -6,8 +6,8 @@ use super::{Context, Objective, Optimizer};
 use crate::rng::Rng;
 use crate::termination::{StopReason, Termination, Usage};
 
-/// Iterations given to a run whose termination sets no count limit and no target cost, so a
-/// run always ends on its own (a wall-time limit is a safety net, not a budget).
+/// Iterations given to a run whose termination limits neither iterations nor evaluations, so
+/// a run always ends on its own (a wall-time limit is a safety net, not a budget).
 pub const DEFAULT_ITERATIONS: u64 = 100;
 
 /// Reported to the observer after every iteration.
@@ -34,8 +34,8 @@ pub struct RunResult {
 }
 
 /// Runs `optimizer` on `objective` until `termination` fires. `seeds` are starting points
-/// (a warm start): optimizers place them in their initial population. A termination with no
-/// count limit and no target gets [`DEFAULT_ITERATIONS`].
+/// (a warm start): optimizers place them in their initial population. A termination limiting
+/// neither iterations nor evaluations gets [`DEFAULT_ITERATIONS`].
 pub fn run(
     optimizer: &mut dyn Optimizer,
     objective: &dyn Objective,
@@ -45,7 +45,9 @@ pub fn run(
     seeds: &[Vec<f64>],
     observer: &mut dyn FnMut(&Progress),
 ) -> RunResult {
-    let unbounded = !termination.has_count_limit() && termination.target_cost.is_none();
+    // Optimizers count iterations and evaluations: without a limit in either (a target cost
+    // or an expansion limit bounds nothing here), the default iteration count applies.
+    let unbounded = termination.max_iterations.is_none() && termination.max_evaluations.is_none();
     let defaulted;
     let termination = if unbounded {
         defaulted = Termination { max_iterations: Some(DEFAULT_ITERATIONS), ..termination.clone() };
@@ -54,7 +56,8 @@ pub fn run(
         termination
     };
     let watch = termination.start();
-    let mut ctx = Context::new(objective, rng, termination.max_evaluations, parallel, seeds);
+    let mut ctx =
+        Context::new(objective, rng, termination.max_evaluations, parallel, seeds).with_termination(termination);
     optimizer.init(&mut ctx);
     let mut history = vec![ctx.best_cost()];
     let mut iterations = 0u64;

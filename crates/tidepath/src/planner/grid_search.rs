@@ -12,9 +12,6 @@
 //! `exact`). Theta* (Nash et al. 2007) relaxes a node through its parent's parent when the two
 //! see each other, giving any-angle paths never longer than A*'s; it is not guaranteed optimal.
 
-use std::sync::atomic::AtomicBool;
-use std::time::Instant;
-
 use tidepath_search::{astar, theta_star, Grid2, Grid3, Limits, SearchGrid, SearchStatus};
 
 use super::{Claim, Planner, PlannerOutput, PlannerSettings, Problem, RunOptions, SearchStats};
@@ -24,6 +21,7 @@ use crate::optim::Progress;
 use crate::raster::Raster;
 use crate::registry::Param;
 use crate::rng::Rng;
+use crate::termination::from_search_stop;
 use crate::termination::{StopReason, Termination};
 use crate::world::{Current, Dims, Terrain, World};
 
@@ -129,7 +127,8 @@ pub struct MissionSearch {
 }
 
 impl GridSearch {
-    fn raster(&self, problem: &Problem<'_>, i: usize) -> Result<Raster> {
+    /// The raster's cell size, layer thickness and 2-D plane for mission `i`.
+    fn raster_settings(&self, problem: &Problem<'_>, i: usize) -> (f64, f64, f64) {
         let w = problem.world;
         let m = &problem.missions[i];
         let size = w.bounds.size();
@@ -158,12 +157,26 @@ impl GridSearch {
             map_cell.unwrap_or(size.x.max(size.y) / cells as f64)
         };
         let band = (w.bounds.max.z.min(m.vehicle.z_max()) - w.bounds.min.z.max(m.vehicle.z_min())).max(1e-9);
-        Raster::new(w, &m.vehicle, cell, band / self.params.layers as f64, m.start.z)
+        (cell, band / self.params.layers as f64, m.start.z)
     }
 
-    /// Searches mission `i`; `deadline` and `stop` bound it.
-    pub fn search(&self, problem: &Problem<'_>, i: usize, limits: &Limits<'_>) -> Result<MissionSearch> {
-        let r = self.raster(problem, i)?;
+    /// Searches mission `i` within `termination` (its clock, stop flag and deadline bound the
+    /// rasterisation and the search) and at most `max_expansions` expansions.
+    pub fn search(
+        &self,
+        problem: &Problem<'_>,
+        i: usize,
+        termination: &Termination,
+        max_expansions: Option<u64>,
+    ) -> Result<MissionSearch> {
+        let (cell, cell_z, plane_z) = self.raster_settings(problem, i);
+        let stop = || termination.interrupted().is_some();
+        let vehicle = &problem.missions[i].vehicle;
+        let Some(r) = Raster::new_within(problem.world, vehicle, cell, cell_z, plane_z, &stop)? else {
+            let stopped = termination.interrupted().or(Some(StopReason::WallTime));
+            return Ok(MissionSearch { path: Vec::new(), optimal: false, expansions: 0, stopped });
+        };
+        let limits = &termination.search_limits(max_expansions);
         let m = &problem.missions[i];
         let model = problem.path_model(i);
         let validator = &model.validator;
@@ -224,9 +237,7 @@ impl GridSearch {
         }
         .map_err(|e| Error::input("planner", e.to_string()))?;
         let stopped = match outcome.status {
-            SearchStatus::Stopped(tidepath_search::StopReason::MaxExpansions) => Some(StopReason::MaxExpansions),
-            SearchStatus::Stopped(tidepath_search::StopReason::StopFlag) => Some(StopReason::Cancelled),
-            SearchStatus::Stopped(tidepath_search::StopReason::Deadline) => Some(StopReason::WallTime),
+            SearchStatus::Stopped(r) => Some(from_search_stop(r)),
             _ => None,
         };
         let path =
@@ -294,7 +305,8 @@ impl Planner for GridSearch {
 
     fn check(&self, problem: &Problem<'_>) -> Result<()> {
         for i in 0..problem.missions.len() {
-            self.raster(problem, i).map_err(|e| match e {
+            let (cell, cell_z, _) = self.raster_settings(problem, i);
+            Raster::shape(problem.world, &problem.missions[i].vehicle, cell, cell_z).map_err(|e| match e {
                 Error::Input { message, .. } => Error::input(format!("planner.params.{}", self.id), message),
                 other => other,
             })?;
@@ -311,15 +323,12 @@ impl Planner for GridSearch {
         _observer: &mut dyn FnMut(&Progress),
     ) -> PlannerOutput {
         let watch = termination.start();
-        let flag: Option<&AtomicBool> = termination.stop.as_deref();
-        let deadline = termination.wall_time.map(|d| Instant::now() + d);
         let mut stats = SearchStats::default();
         let mut paths = Vec::new();
         let mut optimal = true;
         for i in 0..problem.missions.len() {
             let left = termination.max_expansions.map(|m| m.saturating_sub(stats.expansions));
-            let limits = Limits { max_expansions: left, stop: flag, deadline };
-            match self.search(problem, i, &limits) {
+            match self.search(problem, i, termination, left) {
                 Ok(r) => {
                     stats.expansions += r.expansions;
                     optimal &= r.optimal;

@@ -85,11 +85,18 @@ impl Hybrid {
         Ok(Self { params })
     }
 
+    /// The reference path of mission `i` within `termination` (a share of the run's time on
+    /// the run's clock), and the expansions it took.
     fn reference(&self, problem: &Problem<'_>, i: usize, termination: &Termination) -> (Vec<Vec3>, u64) {
         let m = &problem.missions[i];
         if let Ok((scene, _)) = visibility::scene(problem, i, true) {
-            let p =
-                tidepath_search::visibility::shortest_path(&scene, [m.start.x, m.start.y], [m.goal.x, m.goal.y], 0.1);
+            let p = tidepath_search::visibility::shortest_path_within(
+                &scene,
+                [m.start.x, m.start.y],
+                [m.goal.x, m.goal.y],
+                0.1,
+                &termination.search_limits(None),
+            );
             if let Ok(Some(p)) = p {
                 let mut pts: Vec<Vec3> = p.polyline.iter().map(|q| Vec3::new(q[0], q[1], m.start.z)).collect();
                 let n = pts.len();
@@ -104,9 +111,7 @@ impl Hybrid {
         let any_angle = problem.world.dims == crate::world::Dims::Two;
         let id = if any_angle { "theta-star" } else { "astar" };
         let search = GridSearch::new(id, GridParams { cells: self.params.cells, ..GridParams::default() }, any_angle);
-        let deadline = termination.wall_time.map(|d| std::time::Instant::now() + d / 2);
-        let limits = tidepath_search::Limits { max_expansions: None, stop: termination.stop.as_deref(), deadline };
-        match search.search(problem, i, &limits) {
+        match search.search(problem, i, termination, None) {
             Ok(r) if r.path.len() >= 2 => (r.path, r.expansions),
             Ok(r) => (vec![m.start, m.goal], r.expansions),
             Err(_) => (vec![m.start, m.goal], 0),
@@ -156,10 +161,14 @@ impl Planner for Hybrid {
         let watch = termination.start();
         let mut expansions = 0;
         let mut refs = Vec::new();
-        for i in 0..problem.missions.len() {
+        let missions = problem.missions.len();
+        for i in 0..missions {
+            // The references share half of the time left, mission by mission; the refinement
+            // then has what remains, on the same clock.
+            let share = 0.5 / (missions - i) as f64;
             let (path, e) = match options.init.and_then(|p| p.get(i)).filter(|p| p.len() >= 2) {
                 Some(p) => (p.clone(), 0),
-                None => self.reference(problem, i, termination),
+                None => self.reference(problem, i, &termination.share_of_remaining(share)),
             };
             expansions += e;
             refs.push(path);
@@ -171,7 +180,7 @@ impl Planner for Hybrid {
             let m = &problem.missions[i];
             // The reference's essential turns: drop every point whose bypass is feasible and
             // no costlier (so the arcs of a visibility path shrink to the bends that matter).
-            let r = &Shortcut.smooth(&problem.path_model(i), problem.cost, r);
+            let r = &Shortcut.smooth(&problem.path_model(i), problem.cost, r, termination);
             let turns = r.len().saturating_sub(2);
             let n = (2 * turns + 4).clamp(6, 24).max(turns.min(MAX_WAYPOINTS));
             let enc = FreeWaypoints::new(m.start, m.goal, n, &problem.world.bounds, problem.z_range(i))
@@ -201,7 +210,7 @@ impl Planner for Hybrid {
             seeds.push(x);
         }
         let mut de = De::new(DeParams { population: self.params.population, ..DeParams::default() });
-        let t = if termination.has_count_limit() {
+        let t = if termination.max_iterations.is_some() || termination.max_evaluations.is_some() {
             termination.clone()
         } else {
             Termination { max_iterations: Some(self.params.iterations), ..termination.clone() }
@@ -209,8 +218,11 @@ impl Planner for Hybrid {
         // Every seed is a starting point: the population is the reference's neighbourhood.
         let r = optim::run(&mut de, &objective, &t, rng, options.parallel, &seeds, observer);
         let paths = if r.best_x.len() == objective.dim() { objective.decode(&r.best_x) } else { seeds_pts };
-        let paths =
-            paths.iter().enumerate().map(|(i, p)| Shortcut.smooth(&problem.path_model(i), problem.cost, p)).collect();
+        let paths = paths
+            .iter()
+            .enumerate()
+            .map(|(i, p)| Shortcut.smooth(&problem.path_model(i), problem.cost, p, termination))
+            .collect();
         PlannerOutput {
             paths,
             claim: None::<Claim>,

@@ -10,13 +10,15 @@ use tidepath_search::{maximin, Grid2};
 
 use super::Problem;
 use crate::geom::Vec3;
+use crate::termination::Termination;
 use crate::world::Dims;
 
 /// Cells on the longer side of the domain.
 const CELLS_LONG_SIDE: f64 = 256.0;
 
-/// `Some(reason)` when mission `i` of `problem` provably has no path.
-pub fn unreachable(problem: &Problem<'_>, i: usize) -> Option<String> {
+/// `Some(reason)` when mission `i` of `problem` provably has no path. Polls `termination`
+/// (the run's clock): when it fires, nothing is proved and the answer is `None`.
+pub fn unreachable(problem: &Problem<'_>, i: usize, termination: &Termination) -> Option<String> {
     let world = problem.world;
     let m = &problem.missions[i];
     let v = &m.vehicle;
@@ -39,6 +41,7 @@ pub fn unreachable(problem: &Problem<'_>, i: usize) -> Option<String> {
     let mut blocked = vec![false; nx * ny];
     if !matches!(world.terrain, crate::world::Terrain::None) {
         for j in 0..ny {
+            termination.interrupted().is_none().then_some(())?;
             for ii in 0..nx {
                 let (xa, ya) = (b.min.x + ii as f64 * dx, b.min.y + j as f64 * dy);
                 // Water depth at the deepest point of the cell.
@@ -60,6 +63,7 @@ pub fn unreachable(problem: &Problem<'_>, i: usize) -> Option<String> {
         let (i0, i1) = cells(bb.min.x - safety, bb.max.x + safety, b.min.x, dx, nx);
         let (j0, j1) = cells(bb.min.y - safety, bb.max.y + safety, b.min.y, dy, ny);
         for j in j0..=j1 {
+            termination.interrupted().is_none().then_some(())?;
             for ii in i0..=i1 {
                 let (xa, ya) = (b.min.x + ii as f64 * dx, b.min.y + j as f64 * dy);
                 let (xb, yb) = (xa + dx, ya + dy);

@@ -118,6 +118,8 @@ pub fn solve(
     observer: &mut dyn FnMut(&Progress),
 ) -> Result<Plan> {
     termination.check()?;
+    // The run's one clock starts here: every stage below draws on the same deadline.
+    let termination = &termination.started_now();
     let id = planner.id().to_string();
     let models: Vec<PathModel<'_>> = (0..problem.missions.len()).map(|i| problem.path_model(i)).collect();
     let unplanned = |status, reason| Plan {
@@ -140,7 +142,7 @@ pub fn solve(
     }
 
     for i in 0..problem.missions.len() {
-        if let Some(reason) = super::reachability::unreachable(problem, i) {
+        if let Some(reason) = super::reachability::unreachable(problem, i, termination) {
             return Ok(unplanned(Status::Unreachable, reason));
         }
     }
@@ -162,7 +164,7 @@ pub fn solve(
         let mission = match options.smoother {
             None => judge(model, problem.cost, &raw, &m.name),
             Some(s) => {
-                let smoothed = s.smooth(model, problem.cost, &raw);
+                let smoothed = s.smooth(model, problem.cost, &raw, termination);
                 let raw_cost = problem.cost.breakdown(model, &raw).0;
                 let mut j = judge(model, problem.cost, &smoothed, &m.name);
                 j.waypoints = raw;

@@ -13,14 +13,14 @@
 //! It applies to 2-D worlds without a seabed that could block the plane and without moving
 //! obstacles; elsewhere it is an input error naming why (use `theta-star` or `hybrid`).
 
-use tidepath_search::visibility::{shortest_path, Circle, Polygon, Rect, Scene};
+use tidepath_search::visibility::{shortest_path, shortest_path_within, Circle, Polygon, Rect, Scene, VisError};
 
 use super::{Claim, Planner, PlannerOutput, Problem, RunOptions, SearchStats};
 use crate::error::{Error, Result};
 use crate::geom::Vec3;
 use crate::optim::Progress;
 use crate::rng::Rng;
-use crate::termination::{StopReason, Termination};
+use crate::termination::{from_search_stop, StopReason, Termination};
 use crate::world::{Dims, Shape};
 
 /// Chord step along arcs (rad): 2 degrees.
@@ -154,12 +154,25 @@ impl Planner for Visibility {
         let watch = termination.start();
         let mut paths = Vec::new();
         let mut all_exact = true;
+        let mut stop_reason = StopReason::Completed;
         for i in 0..problem.missions.len() {
             let m = &problem.missions[i];
-            let found = scene(problem, i, true).ok().and_then(|(scene, exact)| {
-                all_exact &= exact;
-                shortest_path(&scene, [m.start.x, m.start.y], [m.goal.x, m.goal.y], ARC_STEP).ok().flatten()
-            });
+            let limits = termination.search_limits(None);
+            let found = match scene(problem, i, true) {
+                Ok((scene, exact)) => {
+                    all_exact &= exact;
+                    match shortest_path_within(&scene, [m.start.x, m.start.y], [m.goal.x, m.goal.y], ARC_STEP, &limits)
+                    {
+                        Ok(p) => p,
+                        Err(VisError::Stopped(r)) => {
+                            stop_reason = from_search_stop(r);
+                            None
+                        }
+                        Err(_) => None,
+                    }
+                }
+                Err(_) => None,
+            };
             match found {
                 Some(p) => {
                     let mut pts: Vec<Vec3> = p.polyline.iter().map(|q| Vec3::new(q[0], q[1], m.start.z)).collect();
@@ -174,8 +187,7 @@ impl Planner for Visibility {
                 }
             }
         }
-        let stats =
-            SearchStats { stop_reason: StopReason::Completed, elapsed: watch.elapsed(), ..SearchStats::default() };
+        let stats = SearchStats { stop_reason, elapsed: watch.elapsed(), ..SearchStats::default() };
         PlannerOutput { paths, claim: all_exact.then_some(Claim::Optimal), stats }
     }
 }

@@ -33,31 +33,19 @@ use crate::world::{Dims, World};
 /// Most cells a raster may have: 16 million (the search buffers then take about 400 MB).
 pub const MAX_CELLS: usize = 1 << 24;
 
-/// A rasterised world.
-#[derive(Clone, Debug)]
-pub struct Raster {
-    pub x0: f64,
-    pub y0: f64,
-    /// Cell sizes (cells tile the domain exactly, so they need not be square).
-    pub dx: f64,
-    pub dy: f64,
-    pub nx: usize,
-    pub ny: usize,
-    /// Layer k spans [z0 + k dz, z0 + (k + 1) dz]; one layer at the mission plane in 2-D.
-    pub z0: f64,
-    pub dz: f64,
-    pub nz: usize,
-    pub three_d: bool,
-    /// `true` where the cell may not be entered, for each rasterisation, flat index
-    /// `i + nx (j + ny k)`.
-    pub conservative: Vec<bool>,
-    pub optimistic: Vec<bool>,
+/// The shape of a raster, from its settings.
+struct Geometry {
+    nx: usize,
+    ny: usize,
+    nz: usize,
+    z0: f64,
+    dz: f64,
+    three_d: bool,
+    cells: usize,
 }
 
-impl Raster {
-    /// Rasterises `world` for `vehicle` with cells of about `cell` metres (horizontal), the
-    /// 2-D plane at `plane_z`. In 3-D the layers are about `cell_z` metres thick.
-    pub fn new(world: &World, vehicle: &Vehicle, cell: f64, cell_z: f64, plane_z: f64) -> Result<Self> {
+impl Geometry {
+    fn of(world: &World, vehicle: &Vehicle, cell: f64, cell_z: f64, plane_z: f64) -> Result<Self> {
         let b = &world.bounds;
         let (w, h) = (b.max.x - b.min.x, b.max.y - b.min.y);
         if !(cell > 0.0 && cell.is_finite() && cell_z > 0.0 && cell_z.is_finite()) {
@@ -84,6 +72,59 @@ impl Raster {
                 format!("{nx} x {ny} x {nz} cells exceed the limit of {MAX_CELLS}; use coarser cells"),
             ));
         };
+        Ok(Self { nx, ny, nz, z0, dz, three_d, cells })
+    }
+}
+
+/// A rasterised world.
+#[derive(Clone, Debug)]
+pub struct Raster {
+    pub x0: f64,
+    pub y0: f64,
+    /// Cell sizes (cells tile the domain exactly, so they need not be square).
+    pub dx: f64,
+    pub dy: f64,
+    pub nx: usize,
+    pub ny: usize,
+    /// Layer k spans [z0 + k dz, z0 + (k + 1) dz]; one layer at the mission plane in 2-D.
+    pub z0: f64,
+    pub dz: f64,
+    pub nz: usize,
+    pub three_d: bool,
+    /// `true` where the cell may not be entered, for each rasterisation, flat index
+    /// `i + nx (j + ny k)`.
+    pub conservative: Vec<bool>,
+    pub optimistic: Vec<bool>,
+}
+
+impl Raster {
+    /// Rasterises `world` for `vehicle` with cells of about `cell` metres (horizontal), the
+    /// 2-D plane at `plane_z`. In 3-D the layers are about `cell_z` metres thick.
+    pub fn new(world: &World, vehicle: &Vehicle, cell: f64, cell_z: f64, plane_z: f64) -> Result<Self> {
+        Ok(Self::new_within(world, vehicle, cell, cell_z, plane_z, &|| false)?.expect("never stopped"))
+    }
+
+    /// The raster's shape `(nx, ny, nz)` for these settings, checked against [`MAX_CELLS`]
+    /// without building anything (a planner's settings check).
+    pub fn shape(world: &World, vehicle: &Vehicle, cell: f64, cell_z: f64) -> Result<(usize, usize, usize)> {
+        let g = Geometry::of(world, vehicle, cell, cell_z, 0.0)?;
+        Ok((g.nx, g.ny, g.nz))
+    }
+
+    /// [`Raster::new`], polling `stop` once per row of cells and per obstacle row: `Ok(None)`
+    /// when it asked to stop (a rasterisation of many thousand cells over a seabed of many
+    /// peaks takes minutes; it must not outlive the run's budget).
+    pub fn new_within(
+        world: &World,
+        vehicle: &Vehicle,
+        cell: f64,
+        cell_z: f64,
+        plane_z: f64,
+        stop: &dyn Fn() -> bool,
+    ) -> Result<Option<Self>> {
+        let Geometry { nx, ny, nz, z0, dz, three_d, cells } = Geometry::of(world, vehicle, cell, cell_z, plane_z)?;
+        let b = &world.bounds;
+        let (w, h) = (b.max.x - b.min.x, b.max.y - b.min.y);
         let (dx, dy) = (w / nx as f64, h / ny as f64);
         let safety = vehicle.safety_distance;
         let terrain = &world.terrain;
@@ -102,6 +143,9 @@ impl Raster {
             optimistic: vec![false; cells],
         };
         for j in 0..ny {
+            if stop() {
+                return Ok(None);
+            }
             for i in 0..nx {
                 let (xa, ya) = (r.x0 + i as f64 * dx, r.y0 + j as f64 * dy);
                 let (xb, yb) = (xa + dx, ya + dy);
@@ -130,6 +174,9 @@ impl Raster {
             let (k0, k1) = if three_d { span(bb.min.z, bb.max.z, z0, dz, nz) } else { (0, 0) };
             for k in k0..=k1 {
                 for j in j0..=j1 {
+                    if stop() {
+                        return Ok(None);
+                    }
                     for i in i0..=i1 {
                         let (xa, ya) = (r.x0 + i as f64 * dx, r.y0 + j as f64 * dy);
                         let (xb, yb) = (xa + dx, ya + dy);
@@ -157,7 +204,7 @@ impl Raster {
                 }
             }
         }
-        Ok(r)
+        Ok(Some(r))
     }
 
     pub fn len(&self) -> usize {

@@ -11,13 +11,21 @@ use crate::error::Result;
 use crate::geom::Vec3;
 use crate::path::PathModel;
 use crate::registry::{no_params, Entry, Registry};
+use crate::termination::Termination;
 
 pub trait Smoother: Send + Sync {
     /// The id used on the command line and in scenarios.
     fn id(&self) -> &'static str;
     /// A path with the same start and goal that is never worse under `cost`, and never
-    /// infeasible when `points` is feasible.
-    fn smooth(&self, model: &PathModel<'_>, cost: &dyn CostModel, points: &[Vec3]) -> Vec<Vec3>;
+    /// infeasible when `points` is feasible. Polls `termination` (the run's clock and stop
+    /// flag) in its loops and returns its best path so far when it fires.
+    fn smooth(
+        &self,
+        model: &PathModel<'_>,
+        cost: &dyn CostModel,
+        points: &[Vec3],
+        termination: &Termination,
+    ) -> Vec<Vec3>;
 }
 
 pub type BuildSmoother = fn() -> Box<dyn Smoother>;

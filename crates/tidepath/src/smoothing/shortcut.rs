@@ -8,6 +8,7 @@ use crate::cost::CostModel;
 use crate::geom::Vec3;
 use crate::path::PathModel;
 use crate::scratch::Scratch;
+use crate::termination::Termination;
 
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Shortcut;
@@ -17,7 +18,13 @@ impl Smoother for Shortcut {
         "shortcut"
     }
 
-    fn smooth(&self, model: &PathModel<'_>, cost: &dyn CostModel, points: &[Vec3]) -> Vec<Vec3> {
+    fn smooth(
+        &self,
+        model: &PathModel<'_>,
+        cost: &dyn CostModel,
+        points: &[Vec3],
+        termination: &Termination,
+    ) -> Vec<Vec3> {
         let mut scratch = Scratch::default();
         let mut path = points.to_vec();
         let mut best = cost.cost(model, &path, &mut scratch);
@@ -26,6 +33,10 @@ impl Smoother for Shortcut {
         let mut i = 0;
         while i + 2 < path.len() {
             for j in (i + 2..path.len()).rev() {
+                // Every candidate is a whole path evaluation: poll before each.
+                if termination.interrupted().is_some() {
+                    return path;
+                }
                 candidate.clear();
                 candidate.extend_from_slice(&path[..=i]);
                 candidate.extend_from_slice(&path[j..]);
@@ -71,7 +82,7 @@ mod tests {
         let mission = Mission::new("m", v, p[0], p[10], 0.0);
         let m = PathModel::new(&w, &mission, &s);
         let cost = GeneralCost::new(GeneralWeights::default()).unwrap();
-        let out = Shortcut.smooth(&m, &cost, &p);
+        let out = Shortcut.smooth(&m, &cost, &p, &Termination::default());
         assert_eq!(out, vec![p[0], p[10]]);
     }
 
@@ -90,7 +101,7 @@ mod tests {
         let m = PathModel::new(&w, &mission, &s);
         let cost = GeneralCost::new(GeneralWeights::default()).unwrap();
         let before = cost.cost(&m, &p, &mut Scratch::default());
-        let out = Shortcut.smooth(&m, &cost, &p);
+        let out = Shortcut.smooth(&m, &cost, &p, &Termination::default());
         let mut times = Vec::new();
         assert!(m.assess(&out, &mut times).feasible(), "smoothing broke feasibility: {out:?}");
         assert!(out.len() < p.len() && out.len() > 2, "{out:?}");
