@@ -318,6 +318,7 @@ pub fn shortest_path_within(
         let poly = g.polys[k].clone();
         let n = poly.len();
         for v in 0..n {
+            poll.tick()?;
             let (a, b, c) = (poly[(v + n - 1) % n], poly[v], poly[(v + 1) % n]);
             let turn = geometry::cross(geometry::sub(b, a), geometry::sub(c, b));
             if turn > 0.0 && g.point_free(b) {

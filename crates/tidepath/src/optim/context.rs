@@ -1,5 +1,7 @@
 //! What an optimizer may touch during a run: the bounds, the RNG and evaluation.
 
+use std::sync::atomic::Ordering;
+
 use rayon::prelude::*;
 
 use super::{Objective, Population, Scratch};
@@ -27,10 +29,12 @@ pub struct Context<'a> {
     termination: Option<&'a Termination>,
     /// Set once a poll found the run interrupted: no further point is evaluated.
     interrupted: bool,
+    /// Which rows of a parallel evaluation were evaluated (reused, so no allocation).
+    done: Vec<bool>,
 }
 
-/// Rows of a population evaluated between two polls of the stop flag and the deadline: a
-/// generation of 20,000 path evaluations (a tenth of a second) is cut within a millisecond.
+/// Rows of a cheap objective (an analytic test function, tens of nanoseconds) evaluated
+/// between two polls of the stop flag and the deadline (a poll costs about 25 ns).
 const POLL_ROWS: usize = 64;
 
 impl<'a> Context<'a> {
@@ -64,6 +68,7 @@ impl<'a> Context<'a> {
             parallel: parallel && objective.parallel_hint(),
             termination: None,
             interrupted: false,
+            done: Vec::new(),
         }
     }
 
@@ -153,35 +158,76 @@ impl<'a> Context<'a> {
 
     /// Evaluates every row of `pop` into `out`, in parallel when it pays. Rows beyond the
     /// remaining evaluation budget get +inf and are not counted; so do the rows left when the
-    /// run is interrupted (polled every [`POLL_ROWS`] rows, or every chunk of rows in
-    /// parallel), so the best point evaluated so far is kept and nothing more is spent.
+    /// run is interrupted, so the best point evaluated so far is kept and nothing more is
+    /// spent. Costly objectives (path costs: microseconds to milliseconds each) poll the stop
+    /// flag and the deadline before every row, in every worker; cheap ones every
+    /// [`POLL_ROWS`] rows.
     pub fn evaluate_population(&mut self, pop: &Population, out: &mut [f64]) {
         assert_eq!(out.len(), pop.len());
         let budget = (pop.len() as u64).min(self.remaining_evaluations()) as usize;
         let dim = pop.dim().max(1);
         let objective = self.objective;
-        let flat = pop.as_flat();
-        let chunk = if self.parallel { POLL_ROWS * rayon::current_num_threads() } else { POLL_ROWS };
-        let mut n = 0;
-        while n < budget {
-            if self.termination.is_some() && self.should_stop() {
-                break;
-            }
-            let end = (n + chunk).min(budget);
-            let rows = &flat[n * pop.dim()..end * pop.dim()];
-            if self.parallel && end - n > 1 {
-                out[n..end]
-                    .par_iter_mut()
-                    .zip(rows.par_chunks_exact(dim))
-                    .with_min_len(2)
-                    .for_each_init(Scratch::default, |scratch, (o, x)| *o = objective.evaluate(x, scratch));
-            } else {
-                for (o, x) in out[n..end].iter_mut().zip(rows.chunks_exact(dim)) {
-                    *o = objective.evaluate(x, &mut self.scratch);
-                }
-            }
-            n = end;
+        let rows = &pop.as_flat()[..budget * pop.dim()];
+        let termination = self.termination;
+        if self.interrupted {
+            out.fill(f64::INFINITY);
+            return;
         }
+        let n = if self.parallel && budget > 1 {
+            // Each worker polls before each row; a row skipped after a stop is marked.
+            let stopped = std::sync::atomic::AtomicBool::new(false);
+            let done = &mut self.done;
+            done.clear();
+            done.resize(budget, false);
+            out[..budget]
+                .par_iter_mut()
+                .zip(rows.par_chunks_exact(dim))
+                .zip(done.par_iter_mut())
+                .with_min_len(2)
+                .for_each_init(Scratch::default, |scratch, ((o, x), d)| {
+                    let stop = stopped.load(Ordering::Relaxed)
+                        || termination.is_some_and(|t| t.interrupted().is_some()) && {
+                            stopped.store(true, Ordering::Relaxed);
+                            true
+                        };
+                    if !stop {
+                        *o = objective.evaluate(x, scratch);
+                        *d = true;
+                    }
+                });
+            if stopped.load(Ordering::Relaxed) {
+                self.interrupted = true;
+                // Rows some worker skipped are not evaluations: +inf, not counted.
+                let mut n = 0;
+                for (o, &d) in out[..budget].iter_mut().zip(done.iter()) {
+                    if d {
+                        n += 1;
+                    } else {
+                        *o = f64::INFINITY;
+                    }
+                }
+                self.evaluations += n as u64;
+                for i in 0..budget {
+                    if self.done[i] {
+                        self.offer(pop.row(i), out[i]);
+                    }
+                }
+                out[budget..].fill(f64::INFINITY);
+                return;
+            }
+            budget
+        } else {
+            let every = if objective.parallel_hint() { 1 } else { POLL_ROWS };
+            let mut n = 0;
+            for (o, x) in out[..budget].iter_mut().zip(rows.chunks_exact(dim)) {
+                if n % every == 0 && termination.is_some() && self.should_stop() {
+                    break;
+                }
+                *o = objective.evaluate(x, &mut self.scratch);
+                n += 1;
+            }
+            n
+        };
         for o in &mut out[n..] {
             *o = f64::INFINITY;
         }

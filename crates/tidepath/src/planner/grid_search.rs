@@ -188,8 +188,17 @@ impl GridSearch {
         };
         let v = m.vehicle.speed;
         let bound = current_speed_bound(problem.world);
-        let best_speed = v + bound
-            .unwrap_or_else(|| 1.5 * problem.world.current.max_speed_hint(&problem.world.bounds, m.departure_time));
+        let hint = match bound {
+            Some(b) => b,
+            None => match problem.world.current.max_speed_hint_within(&problem.world.bounds, m.departure_time, &stop) {
+                Some(h) => 1.5 * h,
+                None => {
+                    let stopped = termination.interrupted().or(Some(StopReason::WallTime));
+                    return Ok(MissionSearch { path: Vec::new(), optimal: false, expansions: 0, stopped });
+                }
+            },
+        };
+        let best_speed = v + hint;
         let pos = |c: usize| {
             if c == s {
                 m.start

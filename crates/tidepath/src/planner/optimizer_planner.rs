@@ -40,8 +40,15 @@ impl OptimizerPlanner {
 impl OptimizerPlanner {
     /// When a sliced encoding's best path is infeasible and every route here must turn back
     /// along the start-goal axis, say so: no amount of search fixes that encoding.
-    fn sliced_hint(&self, problem: &Problem<'_>, paths: &[Vec<crate::geom::Vec3>]) -> Option<super::Claim> {
-        if self.encoding.kind != "sliced" {
+    /// A hint for a failed sliced encoding: it costs a raster, so it is given only while the
+    /// run's clock has time left.
+    fn sliced_hint(
+        &self,
+        problem: &Problem<'_>,
+        paths: &[Vec<crate::geom::Vec3>],
+        termination: &Termination,
+    ) -> Option<super::Claim> {
+        if self.encoding.kind != "sliced" || termination.interrupted().is_some() {
             return None;
         }
         for (i, p) in paths.iter().enumerate() {
@@ -95,7 +102,7 @@ impl Planner for OptimizerPlanner {
         } else {
             vec![Vec::new(); problem.missions.len()]
         };
-        let claim = self.sliced_hint(problem, &paths);
+        let claim = self.sliced_hint(problem, &paths, termination);
         PlannerOutput {
             paths,
             claim,

@@ -72,14 +72,23 @@ impl Current {
     /// grid; for vortices the ring of peak speed around each centre inside `bounds` is sampled
     /// too, since a core smaller than the grid spacing would otherwise be missed.
     pub fn max_speed_hint(&self, bounds: &Aabb, t: f64) -> f64 {
-        match self {
+        self.max_speed_hint_within(bounds, t, &|| false).expect("never stopped")
+    }
+
+    /// [`Current::max_speed_hint`], polling `stop` once per row of samples and per vortex:
+    /// `None` when it asked to stop (thousands of vortices make every sample slow).
+    pub fn max_speed_hint_within(&self, bounds: &Aabb, t: f64, stop: &dyn Fn() -> bool) -> Option<f64> {
+        Some(match self {
             Current::None => 0.0,
             Current::Uniform(v) => v.x.hypot(v.y),
             Current::Grid(grid) => grid.max_speed(bounds, t),
-            Current::Jet(_) => sample_max_speed(self, bounds, t),
+            Current::Jet(_) => sample_max_speed(self, bounds, t, stop)?,
             Current::Vortices(vortices) => {
-                let mut peak = sample_max_speed(self, bounds, t);
+                let mut peak = sample_max_speed(self, bounds, t, stop)?;
                 for vortex in vortices {
+                    if stop() {
+                        return None;
+                    }
                     let r = VORTEX_PEAK_RADIUS * vortex.core_radius.abs();
                     for k in 0..16 {
                         let (s, c) = (TAU * k as f64 / 16.0).sin_cos();
@@ -91,15 +100,19 @@ impl Current {
                 }
                 peak
             }
-        }
+        })
     }
 }
 
-/// Largest horizontal speed on a 64 x 64 grid of points spanning `bounds` (edges included).
-fn sample_max_speed(current: &Current, bounds: &Aabb, t: f64) -> f64 {
+/// Largest horizontal speed on a 64 x 64 grid of points spanning `bounds` (edges included);
+/// `None` if `stop` (polled per row) asks to stop.
+fn sample_max_speed(current: &Current, bounds: &Aabb, t: f64, stop: &dyn Fn() -> bool) -> Option<f64> {
     const N: usize = 64;
     let mut peak: f64 = 0.0;
     for j in 0..N {
+        if stop() {
+            return None;
+        }
         let y = bounds.min.y + (bounds.max.y - bounds.min.y) * j as f64 / (N - 1) as f64;
         for i in 0..N {
             let x = bounds.min.x + (bounds.max.x - bounds.min.x) * i as f64 / (N - 1) as f64;
@@ -107,7 +120,7 @@ fn sample_max_speed(current: &Current, bounds: &Aabb, t: f64) -> f64 {
             peak = peak.max(v.truncate().length());
         }
     }
-    peak
+    Some(peak)
 }
 
 #[cfg(test)]
