@@ -9,40 +9,16 @@
 //! (`h(u) ≤ c(u, v) + h(v)`, e.g. the octile distance times the smallest cost
 //! per unit length) — each cell is expanded at most once (closed set, no
 //! re-opening), which also bounds the work by the grid size.
+//!
+//! The search loop is the crate's one [`mod@crate::best_first`] loop; A* adds only
+//! its per-neighbour step (offer the neighbour from the expanded cell).
 
-use crate::arena::{OpenEntry, SearchArena};
+use crate::arena::SearchArena;
+use crate::best_first::{Expanded, Frontier};
 use crate::grid::SearchGrid;
-use crate::outcome::{Limits, SearchOutcome, SearchStatus};
+use crate::outcome::{Limits, SearchOutcome};
+use crate::relax::{best_first_on_grid, valid_cost, Relax};
 use crate::SearchError;
-
-/// Validates start and goal for a grid search.
-pub(crate) fn check_endpoints<G: SearchGrid>(grid: &G, start: usize, goal: usize) -> Result<(), SearchError> {
-    let cells = grid.cell_count();
-    for cell in [start, goal] {
-        if cell >= cells {
-            return Err(SearchError::CellOutOfRange { cell, cells });
-        }
-    }
-    if grid.is_blocked(start) {
-        return Err(SearchError::StartBlocked(start));
-    }
-    if grid.is_blocked(goal) {
-        return Err(SearchError::GoalBlocked(goal));
-    }
-    Ok(())
-}
-
-/// A validated edge cost: NaN or negative is a caller bug (debug assertion);
-/// in release builds such an edge is skipped.
-#[inline]
-pub(crate) fn valid_cost(c: f64, from: usize, to: usize) -> Option<f64> {
-    if c >= 0.0 {
-        Some(c)
-    } else {
-        debug_assert!(false, "edge cost {c} from {from} to {to} is NaN or negative");
-        None
-    }
-}
 
 /// A* with fresh buffers. See [`astar_in`].
 pub fn astar<G, C, H>(
@@ -76,8 +52,8 @@ pub fn astar_in<G, C, H>(
     grid: &G,
     start: usize,
     goal: usize,
-    mut edge_cost: C,
-    mut heuristic: H,
+    edge_cost: C,
+    heuristic: H,
     limits: &Limits,
 ) -> Result<SearchOutcome, SearchError>
 where
@@ -85,59 +61,26 @@ where
     C: FnMut(usize, usize, f64) -> Option<f64>,
     H: FnMut(usize) -> f64,
 {
-    check_endpoints(grid, start, goal)?;
-    arena.reset(grid.cell_count());
-    arena.g[start] = 0.0;
-    arena.open.push(OpenEntry::new(heuristic(start), 0.0, start));
-    let mut expansions = 0u64;
-    while let Some(entry) = arena.open.pop() {
-        let u = entry.cell();
-        if arena.is_closed(u) {
-            continue; // a stale duplicate: u was reached more cheaply before
-        }
-        if u == goal {
-            return Ok(SearchOutcome {
-                status: SearchStatus::Found,
-                path: arena.path_to(goal),
-                cost: arena.g[goal],
-                expansions,
-            });
-        }
-        if let Some(reason) = limits.check(expansions) {
-            return Ok(stopped(reason, expansions));
-        }
-        arena.close(u);
-        expansions += 1;
-        let gu = arena.g[u];
-        let SearchArena { g, parent, closed, open, .. } = arena;
-        grid.for_each_neighbour(u, |v| {
-            if closed[v >> 6] & (1u64 << (v & 63)) != 0 {
-                return;
-            }
-            let Some(c) = edge_cost(u, v, gu).and_then(|c| valid_cost(c, u, v)) else {
-                return;
-            };
-            let ng = gu + c;
-            if ng < g[v] {
-                g[v] = ng;
-                parent[v] = u as u32;
-                let h = heuristic(v);
-                debug_assert!(!h.is_nan(), "heuristic is NaN at cell {v}");
-                open.push(OpenEntry::new(ng + h, ng, v));
-            }
-        });
-    }
-    Ok(SearchOutcome { status: SearchStatus::NoPath, path: Vec::new(), cost: f64::INFINITY, expansions })
+    best_first_on_grid(arena, grid, start, goal, GridMove(edge_cost), heuristic, limits)
 }
 
-pub(crate) fn stopped(reason: crate::StopReason, expansions: u64) -> SearchOutcome {
-    SearchOutcome { status: SearchStatus::Stopped(reason), path: Vec::new(), cost: f64::INFINITY, expansions }
+/// A*'s relaxation: the grid move from the expanded cell, priced by the
+/// caller's `edge_cost(from, to, g_from)`.
+struct GridMove<C>(C);
+
+impl<C: FnMut(usize, usize, f64) -> Option<f64>> Relax for GridMove<C> {
+    #[inline]
+    fn relax<H: FnMut(usize) -> f64>(&mut self, u: Expanded, v: usize, frontier: &mut Frontier<'_, H>) {
+        if let Some(c) = (self.0)(u.node, v, u.g).and_then(|c| valid_cost(c, u.node, v)) {
+            frontier.offer(v, u.g + c, u.node);
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Grid2, Grid3, StopReason};
+    use crate::{Grid2, Grid3, SearchStatus, StopReason};
     use std::f64::consts::SQRT_2;
     use std::sync::atomic::AtomicBool;
     use std::time::{Duration, Instant};

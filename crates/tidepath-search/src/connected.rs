@@ -5,8 +5,8 @@
 //! and bounded: each cell is pushed at most once.
 
 use crate::arena::SearchArena;
-use crate::astar::check_endpoints;
 use crate::grid::SearchGrid;
+use crate::relax::check_endpoints;
 use crate::SearchError;
 
 /// `true` iff `goal` can be reached from `start` (fresh buffers).

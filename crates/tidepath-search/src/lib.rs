@@ -8,6 +8,9 @@
 //! * [`astar`] / [`astar_in`]: A* (Dijkstra with a zero heuristic), time-dependent
 //!   costs via `g_from`.
 //! * [`theta_star`] / [`theta_star_in`]: any-angle Theta* with exact line of sight.
+//! * [`best_first()`]: the one best-first loop both are built on, with an
+//!   expansion hook ([`Expand`]); on grids [`OnGrid`] narrows it to a
+//!   per-neighbour hook ([`Relax`]). Later planners reuse it.
 //! * [`visibility::shortest_path`]: exact 2-D shortest path among circles and
 //!   polygons (tangent visibility graph).
 //! * [`maximin`]: bottleneck (e.g. deepest-water) path and where it pinches.
@@ -44,21 +47,25 @@
 
 pub mod arena;
 pub mod astar;
+pub mod best_first;
 pub mod connected;
 pub mod error;
 pub mod grid;
 pub mod los;
 pub mod maximin;
 pub mod outcome;
+pub mod relax;
 pub mod theta;
 pub mod visibility;
 
 pub use arena::SearchArena;
 pub use astar::{astar, astar_in};
+pub use best_first::{best_first, Expand, Expanded, Frontier};
 pub use connected::{connected, connected_in};
 pub use error::SearchError;
 pub use grid::{Grid2, Grid3, SearchGrid, MAX_CELLS};
 pub use los::LineOfSight;
 pub use maximin::{maximin, maximin_in, Bottleneck};
 pub use outcome::{Limits, SearchOutcome, SearchStatus, StopReason, POLL_EVERY};
+pub use relax::{best_first_on_grid, OnGrid, Relax};
 pub use theta::{theta_star, theta_star_in};

@@ -28,8 +28,8 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use crate::arena::{SearchArena, NO_PARENT};
-use crate::astar::check_endpoints;
 use crate::grid::{Grid2, SearchGrid};
+use crate::relax::check_endpoints;
 use crate::SearchError;
 
 /// The best bottleneck between two cells.

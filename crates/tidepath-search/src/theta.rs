@@ -14,12 +14,16 @@
 //!
 //! The path is returned as the turning cells only (start, corners, goal);
 //! consecutive cells see each other.
+//!
+//! The search loop is the crate's one [`mod@crate::best_first`] loop, as for A*;
+//! Theta* differs only in its per-neighbour step ([`crate::Relax`]).
 
-use crate::arena::{OpenEntry, SearchArena, NO_PARENT};
-use crate::astar::{check_endpoints, stopped, valid_cost};
+use crate::arena::SearchArena;
+use crate::best_first::{Expanded, Frontier};
 use crate::grid::SearchGrid;
 use crate::los::LineOfSight;
-use crate::outcome::{Limits, SearchOutcome, SearchStatus};
+use crate::outcome::{Limits, SearchOutcome};
+use crate::relax::{best_first_on_grid, valid_cost, Relax};
 use crate::SearchError;
 
 /// Theta* with fresh buffers. See [`theta_star_in`].
@@ -53,8 +57,8 @@ pub fn theta_star_in<G, C, H>(
     grid: &G,
     start: usize,
     goal: usize,
-    mut segment_cost: C,
-    mut heuristic: H,
+    segment_cost: C,
+    heuristic: H,
     limits: &Limits,
 ) -> Result<SearchOutcome, SearchError>
 where
@@ -62,62 +66,41 @@ where
     C: FnMut(usize, usize, f64) -> Option<f64>,
     H: FnMut(usize) -> f64,
 {
-    check_endpoints(grid, start, goal)?;
-    arena.reset(grid.cell_count());
-    arena.g[start] = 0.0;
-    arena.open.push(OpenEntry::new(heuristic(start), 0.0, start));
-    let mut expansions = 0u64;
-    while let Some(entry) = arena.open.pop() {
-        let u = entry.cell();
-        if arena.is_closed(u) {
-            continue;
-        }
-        if u == goal {
-            return Ok(SearchOutcome {
-                status: SearchStatus::Found,
-                path: arena.path_to(goal),
-                cost: arena.g[goal],
-                expansions,
-            });
-        }
-        if let Some(reason) = limits.check(expansions) {
-            return Ok(stopped(reason, expansions));
-        }
-        arena.close(u);
-        expansions += 1;
-        let gu = arena.g[u];
-        let pu = arena.parent[u];
-        let SearchArena { g, parent, closed, open, .. } = arena;
-        grid.for_each_neighbour(u, |v| {
-            if closed[v >> 6] & (1u64 << (v & 63)) != 0 {
-                return;
-            }
-            let mut best: Option<(f64, u32)> =
-                segment_cost(u, v, gu).and_then(|c| valid_cost(c, u, v)).map(|c| (gu + c, u as u32));
-            if pu != NO_PARENT {
-                let p = pu as usize;
-                let gp = g[p];
-                if grid.line_of_sight(p, v) {
-                    if let Some(c) = segment_cost(p, v, gp).and_then(|c| valid_cost(c, p, v)) {
-                        // Ties go to the parent: fewer turning points.
-                        if best.is_none_or(|(b, _)| gp + c <= b) {
-                            best = Some((gp + c, pu));
-                        }
+    let relax = ThroughParent { grid, segment_cost };
+    best_first_on_grid(arena, grid, start, goal, relax, heuristic, limits)
+}
+
+/// Theta*'s relaxation: the grid move `u → v`, and the segment from `u`'s
+/// parent straight to `v` when the parent sees `v`; the cheaper is offered.
+struct ThroughParent<'g, G, C> {
+    grid: &'g G,
+    segment_cost: C,
+}
+
+impl<G, C> Relax for ThroughParent<'_, G, C>
+where
+    G: LineOfSight,
+    C: FnMut(usize, usize, f64) -> Option<f64>,
+{
+    #[inline]
+    fn relax<H: FnMut(usize) -> f64>(&mut self, u: Expanded, v: usize, frontier: &mut Frontier<'_, H>) {
+        let cost = &mut self.segment_cost;
+        let mut best = cost(u.node, v, u.g).and_then(|c| valid_cost(c, u.node, v)).map(|c| (u.g + c, u.node));
+        if let Some(p) = u.parent {
+            let gp = frontier.g(p);
+            if self.grid.line_of_sight(p, v) {
+                if let Some(c) = cost(p, v, gp).and_then(|c| valid_cost(c, p, v)) {
+                    // Ties go to the parent: fewer turning points.
+                    if best.is_none_or(|(b, _)| gp + c <= b) {
+                        best = Some((gp + c, p));
                     }
                 }
             }
-            if let Some((ng, from)) = best {
-                if ng < g[v] {
-                    g[v] = ng;
-                    parent[v] = from;
-                    let h = heuristic(v);
-                    debug_assert!(!h.is_nan(), "heuristic is NaN at cell {v}");
-                    open.push(OpenEntry::new(ng + h, ng, v));
-                }
-            }
-        });
+        }
+        if let Some((g, from)) = best {
+            frontier.offer(v, g, from);
+        }
     }
-    Ok(SearchOutcome { status: SearchStatus::NoPath, path: Vec::new(), cost: f64::INFINITY, expansions })
 }
 
 #[cfg(test)]
