@@ -51,7 +51,7 @@ fn heavy() -> Scenario {
 /// A heavy request for `id`: a large population where the planner has one, no count limit
 /// beyond its own defaults.
 fn request(id: &str, stop: Option<Arc<AtomicBool>>, time_limit_s: Option<f64>) -> PlanRequest {
-    let entry = planner::registry().get(id).unwrap().clone();
+    let entry = *planner::registry().get(id).unwrap();
     let has_population = entry.params.iter().any(|p| p.name == "population");
     PlanRequest {
         planner: Some(id.to_string()),

@@ -207,11 +207,13 @@ impl<'a> Context<'a> {
                     }
                 }
                 self.evaluations += n as u64;
-                for i in 0..budget {
-                    if self.done[i] {
-                        self.offer(pop.row(i), out[i]);
+                let done = std::mem::take(&mut self.done);
+                for (i, (&d, &f)) in done.iter().zip(out.iter()).enumerate() {
+                    if d {
+                        self.offer(pop.row(i), f);
                     }
                 }
+                self.done = done;
                 out[budget..].fill(f64::INFINITY);
                 return;
             }

@@ -149,7 +149,7 @@ pub fn solve(
     // Whether this planner takes this problem (a setting, or a world it does not cover).
     planner.check(problem)?;
 
-    let out = planner.plan(problem, termination, rng, options.run, observer);
+    let mut out = planner.plan(problem, termination, rng, options.run, observer);
     if let Some(Claim::Unreachable(reason)) = &out.claim {
         return Ok(Plan { stats: out.stats, ..unplanned(Status::Unreachable, reason.clone()) });
     }
@@ -165,6 +165,10 @@ pub fn solve(
             None => judge(model, problem.cost, &raw, &m.name),
             Some(s) => {
                 let smoothed = s.smooth(model, problem.cost, &raw, termination);
+                // A smoother cut by the clock or the stop flag is what stopped the run.
+                if let (Some(r), false) = (termination.interrupted(), is_interruption(out.stats.stop_reason)) {
+                    out.stats.stop_reason = r;
+                }
                 let raw_cost = problem.cost.breakdown(model, &raw).0;
                 let mut j = judge(model, problem.cost, &smoothed, &m.name);
                 j.waypoints = raw;
@@ -201,6 +205,10 @@ pub fn solve(
         _ => reason,
     };
     Ok(Plan { planner: id, status, reason, missions, cost, stats: out.stats })
+}
+
+fn is_interruption(r: StopReason) -> bool {
+    matches!(r, StopReason::WallTime | StopReason::Cancelled)
 }
 
 /// The first violation of the first infeasible mission, and how many more there are.
