@@ -2,7 +2,7 @@
 //!
 //! Exit codes: 0 a plan that can be flown (status exact or feasible) or a command that
 //! succeeded, 1 any other plan status (infeasible, timeout, invalid-start, invalid-goal,
-//! unreachable), 2 bad input or usage.
+//! unreachable), 2 bad input or usage, 130 interrupted by Ctrl-C (what finished is written).
 
 mod commands;
 mod progress;
@@ -64,10 +64,18 @@ pub enum Outcome {
     Infeasible,
     /// A plan's status: 0 for exact or feasible, 1 otherwise.
     Status(tidepath::planner::Status),
+    /// Stopped by Ctrl-C after writing what finished: exit 130.
+    Interrupted,
 }
 
-/// The stop flag Ctrl-C raises: a running plan stops at its next check and reports what it
-/// has (stop reason `cancelled`); a second Ctrl-C ends the process at once.
+/// True once Ctrl-C was pressed (the flag exists only after [`stop_flag`] was called).
+pub fn interrupted() -> bool {
+    stop_flag().load(std::sync::atomic::Ordering::Relaxed)
+}
+
+/// The stop flag Ctrl-C raises: a running plan or experiment stops at its next check and
+/// keeps what finished (stop reason `cancelled`, exit 130); a second Ctrl-C ends the process
+/// at once, after any output commit in progress (so no file is left half-written).
 pub fn stop_flag() -> std::sync::Arc<std::sync::atomic::AtomicBool> {
     use std::sync::atomic::{AtomicBool, Ordering};
     use std::sync::{Arc, OnceLock};
@@ -77,6 +85,7 @@ pub fn stop_flag() -> std::sync::Arc<std::sync::atomic::AtomicBool> {
         let f = flag.clone();
         let _ = ctrlc::set_handler(move || {
             if f.swap(true, Ordering::SeqCst) {
+                let _no_commit_in_progress = tidepath::io::output::commit_lock();
                 std::process::exit(130);
             }
         });
@@ -139,6 +148,7 @@ fn main() -> ExitCode {
         Ok(Outcome::Success) => ExitCode::SUCCESS,
         Ok(Outcome::Infeasible) => ExitCode::from(1),
         Ok(Outcome::Status(s)) => ExitCode::from(s.exit_code() as u8),
+        Ok(Outcome::Interrupted) => ExitCode::from(130),
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)

@@ -10,7 +10,7 @@ use tidepath::optim::functions::{Function, FunctionObjective};
 use tidepath::optim::pso::{Pso, PsoParams};
 use tidepath::optim::{run, Termination};
 use tidepath::rng::run_rng;
-use tidepath_experiments::runner::{execute, tasks, Task};
+use tidepath_experiments::runner::{execute, tasks, RunControl, Task};
 use tidepath_experiments::RunRecord;
 
 const RUNS: u64 = 10;
@@ -51,11 +51,11 @@ fn bench(c: &mut Criterion) {
         b.iter(|| pool.install(|| all.iter().map(|t| one_run(t.seed)).sum::<f64>()))
     });
     g.bench_function("through experiments::runner, 1 job", |b| {
-        b.iter(|| execute(&all, 1, |t| Ok(record(t, one_run(t.seed))), &|_| {}).unwrap())
+        b.iter(|| execute(&all, RunControl::jobs(1), |t| Ok(record(t, one_run(t.seed)))).unwrap())
     });
     g.finish();
     c.bench_function("runner with no work (10 tasks, 1 job)", |b| {
-        b.iter(|| execute(&all, 1, |t| Ok(record(t, 0.0)), &|_| {}).unwrap())
+        b.iter(|| execute(&all, RunControl::jobs(1), |t| Ok(record(t, 0.0))).unwrap())
     });
 }
 

@@ -1,10 +1,12 @@
 //! `compare` and `bench functions`: build the tasks, run them, summarise.
 
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
 
-use super::runner::{execute, tasks, Task};
+use super::runner::{execute, tasks, RunControl, Task};
 use super::table::{rows_for, PlannerRow};
 use super::RunRecord;
 use tidepath::error::{Error, Result};
@@ -13,7 +15,7 @@ use tidepath::optim::{self, Optimizer};
 use tidepath::planner::build_optimizer;
 use tidepath::rng::run_rng;
 use tidepath::scenario::{PlanRequest, Scenario};
-use tidepath::termination::{check_count, check_wall_time, Termination};
+use tidepath::termination::{check_count, check_wall_time, StopReason, Termination};
 
 /// Budget overrides shared by every run of an experiment.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -43,6 +45,17 @@ pub struct Comparison {
     /// The reference plan the gaps are measured against, when one was run.
     #[serde(default)]
     pub reference: Option<Reference>,
+    /// False when the experiment was interrupted (Ctrl-C): the statistics then use the runs
+    /// that finished, and every output says so.
+    #[serde(default = "finished")]
+    pub complete: bool,
+    /// Runs that finished, of `problems x planners x runs`.
+    #[serde(default)]
+    pub finished_runs: usize,
+}
+
+fn finished() -> bool {
+    true
 }
 
 /// A reference planner's result on the scenario: what "the optimum" means for the gap column.
@@ -74,14 +87,21 @@ pub fn default_reference(scenario: &Scenario) -> &'static str {
 
 /// Runs `planner` once (master seed, run 0) as the reference; `None` if it finds no feasible
 /// plan (then no gap is reported).
-pub fn run_reference(scenario: &Scenario, planner: &str, seed: u64, budget: &RunBudget) -> Result<Option<Reference>> {
+pub fn run_reference(
+    scenario: &Scenario,
+    planner: &str,
+    seed: u64,
+    budget: &RunBudget,
+    stop: Option<Arc<AtomicBool>>,
+) -> Result<Option<Reference>> {
     let mut req = request(budget, planner, seed);
+    req.stop = stop;
     // The reference runs with its own defaults, not the compared planners' budget.
     req.iterations = None;
     req.evaluations = None;
     req.population = None;
     let r = scenario.plan(&req, &mut |_| {})?;
-    Ok(r.status.is_success().then(|| Reference {
+    Ok((r.status.is_success() && r.stop_reason != StopReason::Cancelled).then(|| Reference {
         planner: planner.to_string(),
         status: r.status.id().to_string(),
         cost: r.cost_value(),
@@ -98,6 +118,22 @@ pub fn gap_percent(cost: f64, reference: f64) -> f64 {
 impl Comparison {
     pub fn is_functions(&self) -> bool {
         self.kind == "functions"
+    }
+
+    /// Every run the experiment asked for.
+    pub fn planned_runs(&self) -> usize {
+        self.problems.len() * self.planners.len() * self.runs as usize
+    }
+
+    /// One line saying the output is incomplete and why, or `None` when it is complete.
+    pub fn incomplete_note(&self) -> Option<String> {
+        (!self.complete).then(|| {
+            format!(
+                "Incomplete: interrupted after {} of {} runs; the statistics use the finished runs only.",
+                self.finished_runs,
+                self.planned_runs()
+            )
+        })
     }
 
     pub fn records_of<'a>(&'a self, problem: &'a str, planner: &'a str) -> impl Iterator<Item = &'a RunRecord> + 'a {
@@ -153,9 +189,8 @@ pub fn compare_scenario(
     runs: u64,
     master_seed: u64,
     budget: &RunBudget,
-    jobs: usize,
+    control: RunControl<'_>,
     reference: Option<&str>,
-    on_done: &(dyn Fn(usize) + Sync),
 ) -> Result<Comparison> {
     check_planners(planners)?;
     check_size(1, planners.len(), runs)?;
@@ -169,10 +204,11 @@ pub fn compare_scenario(
     let problems = vec![scenario.name.clone()];
     let all = tasks(master_seed, &problems, planners, runs);
     let start = Instant::now();
-    let records = execute(&all, jobs, |t| scenario_run(scenario, budget, t), on_done)?;
+    let stop = control.stop.cloned();
+    let records = execute(&all, control, |t| scenario_run(scenario, budget, t, stop.clone()))?;
     let mut c = finish("scenario", problems, planners, runs, master_seed, budget, records, start);
-    if let Some(id) = reference {
-        c.reference = run_reference(scenario, id, master_seed, budget)?;
+    if let (Some(id), true) = (reference, c.complete) {
+        c.reference = run_reference(scenario, id, master_seed, budget, stop)?;
         if let Some(r) = &c.reference {
             for row in &mut c.rows {
                 row.gap_percent = Some(gap_percent(row.mean, r.cost));
@@ -199,8 +235,10 @@ fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
     }
 }
 
-fn scenario_run(scenario: &Scenario, budget: &RunBudget, t: &Task) -> Result<RunRecord> {
-    let r = scenario.plan(&request(budget, &t.planner, t.seed), &mut |_| {})?;
+fn scenario_run(scenario: &Scenario, budget: &RunBudget, t: &Task, stop: Option<Arc<AtomicBool>>) -> Result<RunRecord> {
+    let mut req = request(budget, &t.planner, t.seed);
+    req.stop = stop;
+    let r = scenario.plan(&req, &mut |_| {})?;
     Ok(RunRecord {
         problem: t.problem.clone(),
         planner: t.planner.clone(),
@@ -241,9 +279,8 @@ pub fn compare_functions(
     runs: u64,
     master_seed: u64,
     budget: &RunBudget,
-    jobs: usize,
+    control: RunControl<'_>,
     factory: Option<&OptimizerFactory<'_>>,
-    on_done: &(dyn Fn(usize) + Sync),
 ) -> Result<Comparison> {
     check_planners(planners)?;
     check_size(problems.len(), planners.len(), runs)?;
@@ -261,36 +298,32 @@ pub fn compare_functions(
             Some(t) => check_wall_time("--time-limit", t)?,
             None => check_wall_time("default time limit", tidepath::scenario::default_time_limit_s()?)?,
         }),
+        stop: control.stop.cloned(),
         ..Termination::default()
     };
     let start = Instant::now();
-    let records = execute(
-        &all,
-        jobs,
-        |t| {
-            let problem = problems.iter().find(|p| p.label == t.problem).expect("task problem exists");
-            let objective = FunctionObjective::new(problem.function, problem.dim, problem.lower, problem.upper);
-            let mut opt = factory(&t.planner)?;
-            let r = optim::run(opt.as_mut(), &objective, &b, &mut run_rng(t.seed, 0), false, &[], &mut |_| {});
-            Ok(RunRecord {
-                problem: t.problem.clone(),
-                planner: t.planner.clone(),
-                run: t.run,
-                seed: t.seed,
-                cost: r.best_cost,
-                feasible: true,
-                length_m: None,
-                travel_time_s: None,
-                evaluations: r.evaluations,
-                iterations: r.iterations,
-                elapsed_s: r.elapsed.as_secs_f64(),
-                stop_reason: r.stop_reason,
-                history: r.history.iter().map(|h| h.is_finite().then_some(*h)).collect(),
-                waypoints: Vec::new(),
-            })
-        },
-        on_done,
-    )?;
+    let records = execute(&all, control, |t| {
+        let problem = problems.iter().find(|p| p.label == t.problem).expect("task problem exists");
+        let objective = FunctionObjective::new(problem.function, problem.dim, problem.lower, problem.upper);
+        let mut opt = factory(&t.planner)?;
+        let r = optim::run(opt.as_mut(), &objective, &b, &mut run_rng(t.seed, 0), false, &[], &mut |_| {});
+        Ok(RunRecord {
+            problem: t.problem.clone(),
+            planner: t.planner.clone(),
+            run: t.run,
+            seed: t.seed,
+            cost: r.best_cost,
+            feasible: true,
+            length_m: None,
+            travel_time_s: None,
+            evaluations: r.evaluations,
+            iterations: r.iterations,
+            elapsed_s: r.elapsed.as_secs_f64(),
+            stop_reason: r.stop_reason,
+            history: r.history.iter().map(|h| h.is_finite().then_some(*h)).collect(),
+            waypoints: Vec::new(),
+        })
+    })?;
     Ok(finish("functions", labels, planners, runs, master_seed, budget, records, start))
 }
 
@@ -302,9 +335,15 @@ fn finish(
     runs: u64,
     master_seed: u64,
     budget: &RunBudget,
-    records: Vec<RunRecord>,
+    records: Vec<Option<RunRecord>>,
     start: Instant,
 ) -> Comparison {
+    // Runs skipped after a stop, and runs the stop cut short, are not finished runs.
+    let planned = records.len();
+    let records: Vec<RunRecord> =
+        records.into_iter().flatten().filter(|r| r.stop_reason != StopReason::Cancelled).collect();
+    let complete = records.len() == planned;
+    let records_len = records.len();
     let rows = problems.iter().flat_map(|p| rows_for(p, planners, &records)).collect();
     Comparison {
         tidepath_version: env!("CARGO_PKG_VERSION").to_string(),
@@ -318,5 +357,7 @@ fn finish(
         records,
         total_wall_s: start.elapsed().as_secs_f64(),
         reference: None,
+        complete,
+        finished_runs: records_len,
     }
 }

@@ -80,8 +80,17 @@ pub const TABLE_FILES: [&str; 3] = ["results.json", "runs.csv", "table.md"];
 
 /// results.json, runs.csv and table.md (the Markdown table printed on stdout).
 pub fn table_files(c: &Comparison) -> Vec<(String, String)> {
-    let texts = [results_json(c), runs_csv(c), super::table::markdown(&c.rows, c.is_functions())];
+    let texts = [results_json(c), runs_csv(c), table_md(c)];
     TABLE_FILES.iter().zip(texts).map(|(n, t)| (n.to_string(), t)).collect()
+}
+
+/// The Markdown table, headed by a note when the experiment is incomplete.
+pub fn table_md(c: &Comparison) -> String {
+    let table = super::table::markdown(&c.rows, c.is_functions());
+    match c.incomplete_note() {
+        Some(note) => format!("> **{note}**\n\n{table}"),
+        None => table,
+    }
 }
 
 /// Declares every file of a results folder `dir` in `out`, so that a bad target is refused

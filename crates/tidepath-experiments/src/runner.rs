@@ -5,7 +5,7 @@
 //! any execution order. Each run evaluates its population sequentially: the parallelism is
 //! across runs, which keeps every core busy without nested thread pools.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
 
 use rayon::prelude::*;
@@ -38,23 +38,48 @@ pub fn tasks(master_seed: u64, problems: &[String], planners: &[String], runs: u
     out
 }
 
-/// Executes every task on `jobs` threads (0 = all cores). `execute` must be a pure function of
-/// the task apart from timing. `on_done` is called after each finished task (from worker
-/// threads) with the number finished so far.
-pub fn execute<F>(tasks: &[Task], jobs: usize, execute: F, on_done: &(dyn Fn(usize) + Sync)) -> Result<Vec<RunRecord>>
+/// How an experiment runs, apart from what it computes: worker threads, the caller's stop flag
+/// (Ctrl-C), and a callback after each finished run (from worker threads, with the number
+/// finished so far).
+#[derive(Clone, Copy)]
+pub struct RunControl<'a> {
+    pub jobs: usize,
+    pub stop: Option<&'a Arc<AtomicBool>>,
+    pub on_done: &'a (dyn Fn(usize) + Sync),
+}
+
+impl<'a> RunControl<'a> {
+    /// `jobs` threads, no stop flag, no progress.
+    pub fn jobs(jobs: usize) -> Self {
+        Self { jobs, stop: None, on_done: &|_| {} }
+    }
+
+    /// True once the stop flag is raised.
+    pub fn stopped(&self) -> bool {
+        self.stop.is_some_and(|f| f.load(Ordering::Relaxed))
+    }
+}
+
+/// Executes every task on `control.jobs` threads. `execute` must be a pure function of the
+/// task apart from timing. A task that has not started when the stop flag is raised is not
+/// run: its entry is `None` (a running task sees the flag through its own termination).
+pub fn execute<F>(tasks: &[Task], control: RunControl<'_>, execute: F) -> Result<Vec<Option<RunRecord>>>
 where
     F: Fn(&Task) -> Result<RunRecord> + Sync,
 {
-    let pool = pool(jobs)?;
+    let pool = pool(control.jobs)?;
     let done = AtomicUsize::new(0);
-    let results: Vec<Result<RunRecord>> = pool.install(|| {
+    let results: Vec<Result<Option<RunRecord>>> = pool.install(|| {
         tasks
             .par_iter()
             .with_max_len(1)
             .map(|t| {
+                if control.stopped() {
+                    return Ok(None);
+                }
                 let r = execute(t);
-                on_done(done.fetch_add(1, Ordering::Relaxed) + 1);
-                r
+                (control.on_done)(done.fetch_add(1, Ordering::Relaxed) + 1);
+                r.map(Some)
             })
             .collect()
     });
@@ -113,10 +138,27 @@ mod tests {
         seeds.sort();
         seeds.dedup();
         assert_eq!(seeds.len(), 12, "every task has its own seed");
-        let one = execute(&t, 1, fake, &|_| {}).unwrap();
-        let two = execute(&t, 2, fake, &|_| {}).unwrap();
+        let one = execute(&t, RunControl::jobs(1), fake).unwrap();
+        let two = execute(&t, RunControl::jobs(2), fake).unwrap();
         assert_eq!(one, two);
-        assert_eq!(one[4].planner, "de");
-        assert_eq!(one[4].run, 1);
+        assert_eq!(one[4].as_ref().unwrap().planner, "de");
+        assert_eq!(one[4].as_ref().unwrap().run, 1);
+    }
+
+    #[test]
+    fn tasks_not_started_when_the_flag_is_raised_are_skipped() {
+        let t = tasks(9, &["a".into()], &["pso".into()], 40);
+        let flag = Arc::new(AtomicBool::new(false));
+        let raise = |task: &Task| {
+            if task.run == 9 {
+                flag.store(true, Ordering::Relaxed);
+            }
+            fake(task)
+        };
+        let control = RunControl { jobs: 1, stop: Some(&flag), on_done: &|_| {} };
+        let out = execute(&t, control, raise).unwrap();
+        assert_eq!(out.len(), 40);
+        assert_eq!(out.iter().filter(|r| r.is_some()).count(), 10);
+        assert!(out[..10].iter().all(Option::is_some));
     }
 }

@@ -6,6 +6,7 @@ use tidepath::optim::functions::Function;
 use tidepath::Error;
 use tidepath_experiments::compare::{compare_functions, FunctionProblem, RunBudget};
 use tidepath_experiments::output;
+use tidepath_experiments::runner::RunControl;
 use tidepath_experiments::table::markdown;
 
 use crate::progress::RunsBar;
@@ -140,7 +141,10 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
         output::declare_results(&mut outputs, "--out", dir, &figures, false)?;
     }
     let bar = RunsBar::new("bench", problems.len() * args.algos.len() * args.runs as usize);
-    let result = compare_functions(&problems, &args.algos, args.runs, args.seed, &budget, jobs, None, &|n| bar.set(n));
+    let stop = crate::stop_flag();
+    let on_done = |n| bar.set(n);
+    let control = RunControl { jobs, stop: Some(&stop), on_done: &on_done };
+    let result = compare_functions(&problems, &args.algos, args.runs, args.seed, &budget, control, None);
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {
@@ -151,7 +155,10 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
         "{} runs per pair, {} evaluations each, master seed {}, {:.1} s\n",
         args.runs, args.evaluations, args.seed, c.total_wall_s
     );
+    if let Some(note) = c.incomplete_note() {
+        println!("{note}\n");
+    }
     print!("{}", markdown(&c.rows, true));
     println!("\nMarks: Wilcoxon rank-sum against {} per function (two-sided, alpha 0.05).", args.algos[0]);
-    Ok(Outcome::Success)
+    Ok(if c.complete { Outcome::Success } else { Outcome::Interrupted })
 }

@@ -7,6 +7,7 @@ use tidepath::scenario::PlanRequest;
 use tidepath::Error;
 use tidepath_experiments::compare::{compare_scenario, default_reference, RunBudget};
 use tidepath_experiments::output;
+use tidepath_experiments::runner::RunControl;
 use tidepath_experiments::table::markdown;
 
 use crate::progress::RunsBar;
@@ -69,16 +70,11 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
 
     let total = args.planners.len() * args.runs as usize;
     let bar = RunsBar::new("compare", total);
-    let result = compare_scenario(
-        &scenario,
-        &args.planners,
-        args.runs,
-        args.run.seed,
-        &budget,
-        jobs,
-        reference.as_deref(),
-        &|n| bar.set(n),
-    );
+    let stop = crate::stop_flag();
+    let on_done = |n| bar.set(n);
+    let control = RunControl { jobs, stop: Some(&stop), on_done: &on_done };
+    let result =
+        compare_scenario(&scenario, &args.planners, args.runs, args.run.seed, &budget, control, reference.as_deref());
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {
@@ -104,6 +100,9 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
         }
         None => {}
     }
+    if let Some(note) = c.incomplete_note() {
+        println!("{note}\n");
+    }
     print!("{}", markdown(&c.rows, false));
     println!("\nMarks: Wilcoxon rank-sum against {} (two-sided, alpha 0.05): + {} significantly better, ≈ no significant difference, - significantly worse.", args.planners[0], args.planners[0]);
     if let Some(dir) = &args.out {
@@ -112,7 +111,7 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
             dir.display()
         );
     }
-    Ok(Outcome::Success)
+    Ok(if c.complete { Outcome::Success } else { Outcome::Interrupted })
 }
 
 /// The request of one compared run, for checking it before any run starts.

@@ -136,6 +136,9 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
             _ => println!("  reference      {} ({}): {}", reference.planner, reference.status, reference.reason),
         }
     }
+    if report.stop_reason == tidepath::termination::StopReason::Cancelled {
+        return Ok(Outcome::Interrupted);
+    }
     Ok(Outcome::Status(report.status))
 }
 

@@ -51,6 +51,7 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
         master_seed: args.seed,
         jobs: crate::jobs(args.jobs)?,
         reference: args.reference.clone(),
+        stop: Some(crate::stop_flag()),
     };
     let bar = std::sync::Mutex::new(None::<RunsBar>);
     let outcomes = reproduce(
@@ -74,5 +75,9 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
         println!("{}: {} of {} claims reproduced", o.title, ok, o.claims.len());
     }
     println!("Wrote {}", args.out.join("REPORT.md").display());
+    if crate::interrupted() {
+        println!("Interrupted: the report is marked incomplete.");
+        return Ok(Outcome::Interrupted);
+    }
     Ok(Outcome::Success)
 }

@@ -5,6 +5,7 @@
 use super::report::same_magnitude;
 use super::{Claim, ExperimentOutcome, PaperCell, PaperTable, ReproduceOptions};
 use crate::compare::{compare_functions, FunctionProblem, RunBudget};
+use crate::runner::RunControl;
 use tidepath::error::Result;
 use tidepath::optim::de::{De, DeParams};
 use tidepath::optim::functions::Function;
@@ -140,16 +141,13 @@ pub(super) fn run(opts: &ReproduceOptions, progress: &(dyn Fn(usize, usize) + Sy
             .collect();
         let labels: Vec<String> = problems.iter().map(|p| p.label.clone()).collect();
         let done = k * per_experiment;
-        let comparison = compare_functions(
-            &problems,
-            &planners,
-            opts.runs,
-            opts.master_seed,
-            &budget,
-            opts.jobs,
-            Some(&factory),
-            &|n| progress(done + n, total),
-        )?;
+        if opts.stop.as_ref().is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed)) {
+            break;
+        }
+        let on_done = |n| progress(done + n, total);
+        let control = RunControl { jobs: opts.jobs, stop: opts.stop.as_ref(), on_done: &on_done };
+        let comparison =
+            compare_functions(&problems, &planners, opts.runs, opts.master_seed, &budget, control, Some(&factory))?;
         let claims = claims(&labels, pso, ga, range);
         let checked: Vec<_> = claims
             .into_iter()

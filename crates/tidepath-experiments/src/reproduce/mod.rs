@@ -26,6 +26,9 @@ pub struct ReproduceOptions {
     /// The reference planner of experiments on scenarios (their gap column): `None` for each
     /// scenario's default ([`super::compare::default_reference`]), `Some("none")` for none.
     pub reference: Option<String>,
+    /// The caller's stop flag (Ctrl-C): experiments not started are left out, and the report
+    /// says the reproduction is incomplete.
+    pub stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
 }
 
 impl ReproduceOptions {

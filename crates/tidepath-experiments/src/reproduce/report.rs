@@ -69,6 +69,15 @@ pub(super) fn stage(
         opts.master_seed,
         env!("CARGO_PKG_VERSION")
     );
+    let interrupted = opts.stop.as_ref().is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed));
+    if interrupted || outcomes.iter().any(|o| !o.comparison.complete) {
+        let _ = writeln!(
+            md,
+            "> **Incomplete**: the run was interrupted (Ctrl-C). {} experiment(s) below have results; each \
+             says how many of its runs finished. Claims are judged on the finished runs only.\n",
+            outcomes.len()
+        );
+    }
     let (mut yes, mut total, mut mag_yes, mut mag_total) = (0, 0, 0, 0);
     for o in outcomes {
         for (_, v) in &o.claims {
@@ -100,6 +109,9 @@ pub(super) fn stage(
             o.paper.source, o.comparison.runs
         );
         let _ = writeln!(md, "{}\n", reference_line(&o.comparison));
+        if let Some(note) = o.comparison.incomplete_note() {
+            let _ = writeln!(md, "**{note}**\n");
+        }
         let gap = o.comparison.reference.is_some();
         let reference = o.comparison.planners.first().cloned().unwrap_or_default();
         let _ = writeln!(
@@ -200,7 +212,7 @@ mod tests {
     fn scenario_experiments_report_the_gap_to_their_reference() {
         use crate::compare::{compare_scenario, RunBudget};
         let scenario = tidepath::scenario::load("headland").unwrap();
-        let opts = ReproduceOptions { runs: 2, master_seed: 3, jobs: 1, reference: None };
+        let opts = ReproduceOptions { runs: 2, master_seed: 3, jobs: 1, reference: None, stop: None };
         assert_eq!(opts.reference_for(&scenario).as_deref(), Some("visibility"));
         let none = ReproduceOptions { reference: Some("none".into()), ..opts.clone() };
         assert_eq!(none.reference_for(&scenario), None);
@@ -211,9 +223,8 @@ mod tests {
             2,
             3,
             &RunBudget::default(),
-            1,
+            crate::runner::RunControl::jobs(1),
             reference.as_deref(),
-            &|_| {},
         )
         .unwrap();
         assert!(c.reference.is_some(), "visibility plans headland");

@@ -221,8 +221,11 @@ impl Outputs {
     }
 
     /// Writes every filled file (declared files left empty are skipped): all of them, or, on
-    /// any failure, none, with every folder and file as it was before.
+    /// any failure, none, with every folder and file as it was before. Holds
+    /// [`commit_lock`] throughout, so a process that exits at once (a second Ctrl-C) waits for
+    /// a commit in progress instead of leaving half of it.
     pub fn commit(self) -> Result<()> {
+        let _guard = commit_lock();
         let files: Vec<Planned> = self.files.into_iter().filter(|p| p.bytes.is_some()).collect();
         for p in &files {
             p.check()?;
@@ -243,6 +246,13 @@ impl Outputs {
             }
         }
     }
+}
+
+/// The lock every commit holds. Code that ends the process abruptly (the second Ctrl-C)
+/// takes it first, so it never exits between the renames of one commit.
+pub fn commit_lock() -> std::sync::MutexGuard<'static, ()> {
+    static LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    LOCK.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 /// What a commit has done so far, to undo it.
