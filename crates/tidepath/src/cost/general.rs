@@ -108,6 +108,26 @@ impl CostModel for GeneralCost {
         terms[..5].iter().sum()
     }
 
+    fn additive_terms(&self) -> &'static [&'static str] {
+        &TERMS[..2]
+    }
+
+    /// Covering `distance` takes at least `distance / max_ground_speed`.
+    fn motion_lower_bound(&self, model: &PathModel<'_>, distance: f64, max_ground_speed: f64) -> f64 {
+        let (l0, t0) = Self::references(model);
+        let w = &self.weights;
+        w.length * distance / l0 + w.time * distance / max_ground_speed.max(f64::MIN_POSITIVE) / t0
+    }
+
+    /// In still water the time is the length over the vehicle's speed.
+    fn cost_per_metre(&self, model: &PathModel<'_>) -> Option<f64> {
+        if !matches!(model.validator.world.current, crate::world::Current::None) {
+            return None;
+        }
+        let (l0, t0) = Self::references(model);
+        Some(self.weights.length / l0 + self.weights.time / (model.vehicle.speed * t0))
+    }
+
     /// Length and time are additive: a valid motion costs w_length l / L0 + w_time dt / T0.
     /// The turn and pitch penalties are path-level (they depend on joints); planners that build
     /// paths edge by edge check them on the finished path, where the evaluation counts them.

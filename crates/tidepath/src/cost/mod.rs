@@ -50,6 +50,19 @@ pub trait CostModel: Send + Sync {
     /// at joints, normalisation constants) are the model's to document.
     fn motion_cost(&self, model: &PathModel<'_>, a: Vec3, b: Vec3, t0: f64) -> Option<(f64, f64)>;
 
+    /// The terms `motion_cost` accumulates (the rest are path-level: they depend on joints or
+    /// on the whole path), for the reasons plans give.
+    fn additive_terms(&self) -> &'static [&'static str];
+
+    /// A lower bound on the additive cost of covering `distance` metres for the mission of
+    /// `model`, at a ground speed of at most `max_ground_speed`: the heuristic of graph
+    /// searches, admissible whenever `max_ground_speed` really bounds the ground speed.
+    fn motion_lower_bound(&self, model: &PathModel<'_>, distance: f64, max_ground_speed: f64) -> f64;
+
+    /// When every motion's additive cost is this many units per metre whatever its direction
+    /// and time (no current), the factor: then a shortest path is a cheapest one.
+    fn cost_per_metre(&self, model: &PathModel<'_>) -> Option<f64>;
+
     /// The total only.
     fn cost(&self, model: &PathModel<'_>, points: &[Vec3], scratch: &mut Scratch) -> f64 {
         let mut terms = [0.0; MAX_TERMS];

@@ -1,19 +1,12 @@
-//! `astar` and `theta-star`: exact search on a rasterised world (see [`crate::raster`]).
-//!
-//! The graph: the centres of the conservative raster's free cells (8-connected in 2-D,
-//! 26-connected in 3-D, no corner cutting), with the mission's own start and goal in place of
-//! their cells' centres. Every edge is checked by the shared motion validator at the time the
-//! vehicle reaches it, so a returned path is valid edge by edge. The objective is `length` or
-//! `time` (travel time through the currents, a time-dependent search: an edge leaves at the
-//! arrival time of its tail); `auto` takes time when the world has a current, else length
-//! (in still water the two agree). A* uses the straight-line distance, over the best possible
-//! ground speed for time, as its heuristic: admissible when a bound on the current's speed is
-//! known (none, uniform, gridded), and then a found path is optimal on this graph (status
-//! `exact`). Theta* (Nash et al. 2007) relaxes a node through its parent's parent when the two
-//! see each other, giving any-angle paths never longer than A*'s; it is not guaranteed optimal.
+//! `astar` and `theta-star`: search on a rasterised world, through the reusable raster search
+//! ([`super::raster_search`]): every move priced by the scenario's cost model (or by length or
+//! time alone, `objective`), checked by the shared motion validator at the vehicle's clock.
+//! A* with an admissible heuristic finds the cheapest path on its graph (status `exact`, the
+//! reason naming the raster) when the world does not change in time; Theta* (Nash et al. 2007)
+//! relaxes a node through its parent when the two see each other, giving any-angle paths never
+//! costlier than A*'s, but not guaranteed optimal.
 
-use tidepath_search::{astar, theta_star, Grid2, Grid3, Limits, SearchGrid, SearchStatus};
-
+use super::raster_search::{Objective, RasterSearch};
 use super::{Claim, Planner, PlannerOutput, PlannerSettings, Problem, RunOptions, SearchStats};
 use crate::error::{Error, Result};
 use crate::geom::Vec3;
@@ -21,9 +14,8 @@ use crate::optim::Progress;
 use crate::raster::Raster;
 use crate::registry::Param;
 use crate::rng::Rng;
-use crate::termination::from_search_stop;
 use crate::termination::{StopReason, Termination};
-use crate::world::{Current, Dims, Terrain, World};
+use crate::world::{Dims, Terrain, World};
 
 /// Most cells along the domain's longer side for which a map given cell by cell is searched
 /// on its own cells by default (beyond, the default raster applies).
@@ -33,8 +25,8 @@ const MAX_MAP_CELLS: f64 = 1000.0;
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct GridParams {
-    /// "auto", "length" or "time".
-    pub objective: String,
+    /// What a move costs: the scenario's cost model (default), or its length or time alone.
+    pub objective: Objective,
     /// Horizontal cell size (m); 0 picks one so the domain's longer side has `cells` cells.
     pub cell: f64,
     /// Cells along the domain's longer side when `cell` is 0; 0 picks 200 in 2-D and 80 in
@@ -46,15 +38,15 @@ pub struct GridParams {
 
 impl Default for GridParams {
     fn default() -> Self {
-        Self { objective: "auto".into(), cell: 0.0, cells: 0, layers: 16 }
+        Self { objective: Objective::Cost, cell: 0.0, cells: 0, layers: 16 }
     }
 }
 
 pub const PARAMS: &[Param] = &[
     Param {
         name: "objective",
-        range: "\"auto\", \"length\" or \"time\"",
-        help: "what the search minimises (default auto)",
+        range: "\"cost\", \"length\" or \"time\"",
+        help: "what a move costs: the scenario's cost model, or length or time alone (default cost)",
     },
     Param { name: "cell", range: "m, >= 0", help: "horizontal cell size; 0: from `cells` (default 0)" },
     Param {
@@ -75,12 +67,6 @@ impl GridParams {
         t.remove("population");
         let p: GridParams = crate::config::from_value(toml::Value::Table(t), &format!("planner.params.{id}"))?;
         let field = |f: &str| format!("planner.params.{id}.{f}");
-        if !["auto", "length", "time"].contains(&p.objective.as_str()) {
-            return Err(Error::input(
-                field("objective"),
-                format!("must be auto, length or time, got '{}'", p.objective),
-            ));
-        }
         if !(p.cell >= 0.0 && p.cell.is_finite()) {
             return Err(Error::input(field("cell"), format!("must be finite and >= 0, got {}", p.cell)));
         }
@@ -94,16 +80,7 @@ impl GridParams {
     }
 }
 
-/// An upper bound on the current's horizontal speed anywhere and any time, when one is known
-/// exactly; `None` for fields only sampled (vortices, the jet).
-pub fn current_speed_bound(world: &World) -> Option<f64> {
-    match &world.current {
-        Current::None => Some(0.0),
-        Current::Uniform(v) => Some(v.length()),
-        Current::Grid(g) => Some(g.speed_bound()),
-        _ => None,
-    }
-}
+pub use super::raster_search::current_speed_bound;
 
 /// A search over one mission's raster.
 pub struct GridSearch {
@@ -123,7 +100,10 @@ pub struct MissionSearch {
     pub path: Vec<Vec3>,
     pub optimal: bool,
     pub expansions: u64,
+    pub motion_checks: u64,
     pub stopped: Option<StopReason>,
+    /// The graph searched, for the reason of an `exact` plan.
+    pub space: String,
 }
 
 impl GridSearch {
@@ -169,124 +149,33 @@ impl GridSearch {
         termination: &Termination,
         max_expansions: Option<u64>,
     ) -> Result<MissionSearch> {
-        let (cell, cell_z, plane_z) = self.raster_settings(problem, i);
-        let stop = || termination.interrupted().is_some();
-        let vehicle = &problem.missions[i].vehicle;
-        let Some(r) = Raster::new_within(problem.world, vehicle, cell, cell_z, plane_z, &stop)? else {
+        let (cell, cell_z, _) = self.raster_settings(problem, i);
+        let Some(rs) = RasterSearch::new(problem, i, cell, cell_z, self.params.objective, termination)? else {
             let stopped = termination.interrupted().or(Some(StopReason::WallTime));
-            return Ok(MissionSearch { path: Vec::new(), optimal: false, expansions: 0, stopped });
+            return Ok(MissionSearch {
+                path: Vec::new(),
+                optimal: false,
+                expansions: 0,
+                motion_checks: 0,
+                stopped,
+                space: String::new(),
+            });
         };
-        let limits = &termination.search_limits(max_expansions);
-        let m = &problem.missions[i];
-        let model = problem.path_model(i);
-        let validator = &model.validator;
-        let (s, g) = (r.cell_of(m.start), r.cell_of(m.goal));
-        let time = match self.params.objective.as_str() {
-            "time" => true,
-            "length" => false,
-            _ => !matches!(problem.world.current, Current::None),
-        };
-        let v = m.vehicle.speed;
-        let bound = current_speed_bound(problem.world);
-        let hint = match bound {
-            Some(b) => b,
-            None => match problem.world.current.max_speed_hint_within(&problem.world.bounds, m.departure_time, &stop) {
-                Some(h) => 1.5 * h,
-                None => {
-                    let stopped = termination.interrupted().or(Some(StopReason::WallTime));
-                    return Ok(MissionSearch { path: Vec::new(), optimal: false, expansions: 0, stopped });
-                }
-            },
-        };
-        let best_speed = v + hint;
-        let pos = |c: usize| {
-            if c == s {
-                m.start
-            } else if c == g {
-                m.goal
-            } else {
-                r.centre(c)
-            }
-        };
-        // The pitch limit is a property of each segment, so edges steeper than it are left out
-        // of the graph (pure vertical moves among them, in 3-D), rather than found on the path.
-        let tan_pitch = m.vehicle.max_pitch.tan();
-        let edge = |a: usize, b: usize, g_from: f64| -> Option<f64> {
-            let t0 = if time { m.departure_time + g_from } else { m.departure_time + g_from / v };
-            let (pa, pb) = (pos(a), pos(b));
-            let d = pb - pa;
-            if r.three_d && d.z != 0.0 && d.z.abs() > tan_pitch * d.truncate().length() {
-                return None;
-            }
-            let check = validator.motion(pa, pb, t0);
-            if !check.valid() {
-                return None;
-            }
-            Some(if time { check.arrival - t0 } else { pa.distance(pb) })
-        };
-        let goal = m.goal;
-        let h = |c: usize| {
-            let d = pos(c).distance(goal);
-            if time {
-                d / best_speed
-            } else {
-                d
-            }
-        };
-        let mut blocked = r.conservative.clone();
-        blocked[s] = false;
-        blocked[g] = false;
-        let outcome = if r.three_d {
-            let grid =
-                Grid3::from_blocked(r.nx, r.ny, r.nz, blocked).map_err(|e| Error::input("raster", e.to_string()))?;
-            self.run(&grid, s, g, edge, h, limits)
+        let out = rs.search(self.any_angle, termination, max_expansions)?;
+        let r = &rs.raster;
+        let space = if r.three_d {
+            format!("the 26-connected {} x {} x {} raster", r.nx, r.ny, r.nz)
         } else {
-            let grid = Grid2::from_blocked(r.nx, r.ny, blocked).map_err(|e| Error::input("raster", e.to_string()))?;
-            self.run(&grid, s, g, edge, h, limits)
-        }
-        .map_err(|e| Error::input("planner", e.to_string()))?;
-        let stopped = match outcome.status {
-            SearchStatus::Stopped(r) => Some(from_search_stop(r)),
-            _ => None,
-        };
-        let path =
-            if s == g { vec![m.start, m.goal] } else { simplify(outcome.path.iter().map(|&c| pos(c)).collect()) };
-        // Optimal on the graph: for time with an admissible heuristic (and FIFO edges); for
-        // length when the times used to check edges are exact (still water or a uniform
-        // current) and nothing moves.
-        let fixed = problem.world.obstacles.iter().all(|o| o.velocity == Vec3::ZERO);
-        let exact_model = if time {
-            bound.is_some()
-        } else {
-            fixed && matches!(problem.world.current, Current::None | Current::Uniform(_))
+            format!("the 8-connected {} x {} raster", r.nx, r.ny)
         };
         Ok(MissionSearch {
-            optimal: outcome.found() && !self.any_angle && exact_model,
-            path: if outcome.found() || s == g { path } else { Vec::new() },
-            expansions: outcome.expansions,
-            stopped,
+            optimal: out.found && !self.any_angle && rs.exact(problem.world),
+            path: simplify(out.path),
+            expansions: out.expansions,
+            motion_checks: out.motion_checks,
+            stopped: out.stopped,
+            space,
         })
-    }
-
-    fn run<G, C, H>(
-        &self,
-        grid: &G,
-        s: usize,
-        g: usize,
-        edge: C,
-        h: H,
-        limits: &Limits<'_>,
-    ) -> std::result::Result<tidepath_search::SearchOutcome, tidepath_search::SearchError>
-    where
-        G: SearchGrid + tidepath_search::LineOfSight,
-        C: FnMut(usize, usize, f64) -> Option<f64>,
-        H: FnMut(usize) -> f64,
-    {
-        if self.any_angle {
-            theta_star(grid, s, g, edge, h, limits)
-        } else {
-            astar(grid, s, g, edge, h, limits)
-        }
     }
 }
 
@@ -335,12 +224,15 @@ impl Planner for GridSearch {
         let mut stats = SearchStats::default();
         let mut paths = Vec::new();
         let mut optimal = true;
+        let mut space = String::new();
         for i in 0..problem.missions.len() {
             let left = termination.max_expansions.map(|m| m.saturating_sub(stats.expansions));
             match self.search(problem, i, termination, left) {
                 Ok(r) => {
                     stats.expansions += r.expansions;
+                    stats.motion_checks += r.motion_checks;
                     optimal &= r.optimal;
+                    space = r.space;
                     if let Some(reason) = r.stopped {
                         stats.stop_reason = reason;
                     }
@@ -353,7 +245,17 @@ impl Planner for GridSearch {
             }
         }
         stats.elapsed = watch.elapsed();
-        PlannerOutput { paths, claim: optimal.then_some(Claim::Optimal), stats }
+        let what = match self.params.objective {
+            Objective::Cost => "the scenario's cost model",
+            Objective::Length => "length",
+            Objective::Time => "travel time",
+        };
+        let claim = optimal.then(|| Claim::Optimal {
+            space: format!("on {space}"),
+            scenario_cost: self.params.objective == Objective::Cost,
+            objective: what.to_string(),
+        });
+        PlannerOutput { paths, claim, stats }
     }
 }
 

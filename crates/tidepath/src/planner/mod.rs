@@ -11,6 +11,7 @@ pub mod grid_search;
 pub mod hybrid;
 mod objective;
 mod optimizer_planner;
+pub mod raster_search;
 pub mod reachability;
 pub mod registry;
 mod sliced_hint;
@@ -61,8 +62,16 @@ impl<'a> Problem<'a> {
 /// What a planner claims beyond its paths, from a direct check or a proof.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Claim {
-    /// The paths are optimal for the planner's model (status `exact` if they are feasible).
-    Optimal,
+    /// The paths are optimal for `objective` over the planner's search space (status `exact`
+    /// if they are feasible and `objective` is the scenario's cost model).
+    Optimal {
+        /// The search space, as the reason names it ("on the 8-connected 200 x 200 raster").
+        space: String,
+        /// What was minimised ("the scenario's cost model", "length").
+        objective: String,
+        /// Whether that is the scenario's own cost model.
+        scenario_cost: bool,
+    },
     /// No path exists; the reason names the bottleneck.
     Unreachable(String),
     /// A line to add to the reason when the plan is not feasible (why this planner failed).
@@ -76,6 +85,13 @@ pub struct SearchStats {
     pub evaluations: u64,
     pub expansions: u64,
     pub samples: u64,
+    /// State checks and motion checks made by the shared validator on the planner's behalf
+    /// (OMPL's "valid states" and "valid motions" counts); 0 where the planner does not count.
+    pub state_checks: u64,
+    pub motion_checks: u64,
+    /// Size of the graph a graph planner built or searched (nodes and edges); 0 otherwise.
+    pub graph_nodes: u64,
+    pub graph_edges: u64,
     /// Best cost after initialisation and after each iteration (optimizers).
     pub history: Vec<f64>,
     pub stop_reason: StopReason,
@@ -89,6 +105,10 @@ impl Default for SearchStats {
             evaluations: 0,
             expansions: 0,
             samples: 0,
+            state_checks: 0,
+            motion_checks: 0,
+            graph_nodes: 0,
+            graph_edges: 0,
             history: Vec::new(),
             stop_reason: StopReason::Completed,
             elapsed: Duration::ZERO,

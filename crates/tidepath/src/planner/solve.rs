@@ -182,10 +182,15 @@ pub fn solve(
     let cost = missions.iter().map(|m| m.cost).sum();
     let all_feasible = missions.iter().all(|m| m.feasible);
     let (status, reason) = if all_feasible {
-        if out.claim == Some(Claim::Optimal) {
-            (Status::Exact, "optimal for the planner's model".to_string())
-        } else {
-            (Status::Feasible, "no constraint violated".to_string())
+        match &out.claim {
+            Some(Claim::Optimal { space, scenario_cost: true, .. }) => {
+                (Status::Exact, optimal_reason(problem.cost, "the scenario's cost model", space))
+            }
+            Some(Claim::Optimal { space, objective, .. }) => (
+                Status::Feasible,
+                format!("no constraint violated; optimal for {objective} {space}, not for the scenario's cost model"),
+            ),
+            _ => (Status::Feasible, "no constraint violated".to_string()),
         }
     } else {
         let first = first_problem(&missions);
@@ -205,6 +210,22 @@ pub fn solve(
         _ => reason,
     };
     Ok(Plan { planner: id, status, reason, missions, cost, stats: out.stats })
+}
+
+/// "optimal for the scenario's cost model on SPACE", saying which terms the optimality covers
+/// when the model has path-level terms too.
+fn optimal_reason(cost: &dyn crate::cost::CostModel, what: &str, space: &str) -> String {
+    let additive = cost.additive_terms();
+    let path_level: Vec<&str> = cost.term_names().iter().filter(|t| !additive.contains(t)).copied().collect();
+    if path_level.is_empty() {
+        format!("optimal for {what} {space}")
+    } else {
+        format!(
+            "optimal for {what} {space} (its additive terms: {}; the path-level terms {} are checked, not optimised)",
+            additive.join(", "),
+            path_level.join(", ")
+        )
+    }
 }
 
 fn is_interruption(r: StopReason) -> bool {

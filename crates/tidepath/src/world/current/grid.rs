@@ -98,6 +98,11 @@ impl CurrentGrid {
     /// Whether the velocity at (x, y) comes from data only: every node with a positive weight
     /// in the bilinear interpolation has data. Always true without gaps.
     #[inline]
+    /// True when the field has one time layer: it does not change in time.
+    pub fn is_steady(&self) -> bool {
+        self.times.len() == 1
+    }
+
     pub fn has_data(&self, x: f64, y: f64) -> bool {
         if self.gaps.is_empty() {
             return true;
