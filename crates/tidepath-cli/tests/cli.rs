@@ -43,7 +43,8 @@ fn demo_plan_is_feasible_and_writes_json_and_svg() {
     let plan = json(&out);
     assert_eq!(plan["feasible"], true);
     assert_eq!(plan["status"], "feasible");
-    assert_eq!(plan["version"], 2);
+    assert_eq!(plan["version"], 3);
+    assert_eq!(plan["missions"][0]["status"], "feasible");
     for key in
         ["planner", "seed", "scenario", "status", "reason", "cost", "missions", "evaluations", "elapsed_s", "history"]
     {

@@ -38,6 +38,7 @@ fn record(t: &Task, cost: f64) -> RunRecord {
         stop_reason: tidepath::optim::StopReason::MaxEvaluations,
         history: Vec::new(),
         waypoints: Vec::new(),
+        ..RunRecord::default()
     }
 }
 

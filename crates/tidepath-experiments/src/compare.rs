@@ -6,6 +6,7 @@ use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
 
+use super::record::MissionRecord;
 use super::runner::{execute, tasks, RunControl, Task};
 use super::table::{rows_for, PlannerRow};
 use super::RunRecord;
@@ -253,6 +254,21 @@ fn scenario_run(scenario: &Scenario, budget: &RunBudget, t: &Task, stop: Option<
         elapsed_s: r.elapsed_s,
         stop_reason: r.stop_reason,
         waypoints: r.paths().first().map(|p| p.iter().map(|q| q.to_array()).collect()).unwrap_or_default(),
+        status: Some(r.status),
+        expansions: r.expansions,
+        samples: r.samples,
+        motion_checks: r.motion_checks,
+        graph_nodes: r.graph_nodes,
+        missions: r
+            .missions
+            .iter()
+            .map(|m| MissionRecord {
+                name: m.name.clone(),
+                status: m.status,
+                waypoints: m.points().iter().map(|q| q.to_array()).collect(),
+                goal_distance_m: m.goal_distance_m,
+            })
+            .collect(),
         history: r.history,
     })
 }
@@ -321,7 +337,7 @@ pub fn compare_functions(
             elapsed_s: r.elapsed.as_secs_f64(),
             stop_reason: r.stop_reason,
             history: r.history.iter().map(|h| h.is_finite().then_some(*h)).collect(),
-            waypoints: Vec::new(),
+            ..RunRecord::default()
         })
     })?;
     Ok(finish("functions", labels, planners, runs, master_seed, budget, records, start))

@@ -18,7 +18,7 @@ pub fn results_json(c: &Comparison) -> String {
 /// One row per run.
 pub fn runs_csv(c: &Comparison) -> String {
     let mut out = String::from(
-        "problem,planner,run,seed,cost,feasible,length_m,travel_time_s,evaluations,iterations,elapsed_s,stop_reason\n",
+        "problem,planner,run,seed,cost,feasible,length_m,travel_time_s,evaluations,iterations,elapsed_s,stop_reason,status,expansions,samples,motion_checks,goal_distance_m\n",
     );
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v}"));
     for r in &c.records {
@@ -26,7 +26,7 @@ pub fn runs_csv(c: &Comparison) -> String {
             serde_json::to_value(r.stop_reason).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default();
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             csv_field(&r.problem),
             csv_field(&r.planner),
             r.run,
@@ -38,7 +38,12 @@ pub fn runs_csv(c: &Comparison) -> String {
             r.evaluations,
             r.iterations,
             r.elapsed_s,
-            stop
+            stop,
+            r.status.map_or("", |s| s.id()),
+            r.expansions,
+            r.samples,
+            r.motion_checks,
+            opt(r.goal_distance_m())
         );
     }
     out

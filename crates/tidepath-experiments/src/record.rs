@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use tidepath::optim::StopReason;
+use tidepath::planner::Status;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RunRecord {
@@ -28,6 +29,69 @@ pub struct RunRecord {
     pub stop_reason: StopReason,
     /// Best cost after initialisation and after each iteration (`None` while still infinite).
     pub history: Vec<Option<f64>>,
-    /// The path found, start and goal included; empty for function benchmarks.
+    /// The path found, start and goal included; empty for function benchmarks. For a fleet,
+    /// the first mission's (every mission's is in `missions`).
     pub waypoints: Vec<[f64; 3]>,
+    /// The plan's status (`None` for function benchmarks): exact, feasible, infeasible, ...
+    #[serde(default)]
+    pub status: Option<Status>,
+    /// The search's other counts, as the plan reports them.
+    #[serde(default)]
+    pub expansions: u64,
+    #[serde(default)]
+    pub samples: u64,
+    #[serde(default)]
+    pub motion_checks: u64,
+    #[serde(default)]
+    pub graph_nodes: u64,
+    /// Every mission's result (empty for function benchmarks).
+    #[serde(default)]
+    pub missions: Vec<MissionRecord>,
+}
+
+/// One mission of a run.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MissionRecord {
+    pub name: String,
+    pub status: Status,
+    /// The final path, start and goal included (empty when nothing was planned).
+    pub waypoints: Vec<[f64; 3]>,
+    /// Distance from the path's last point to the goal when it stops short (m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goal_distance_m: Option<f64>,
+}
+
+impl RunRecord {
+    /// The largest distance left to a goal over the run's missions (m), when a path stopped
+    /// short.
+    pub fn goal_distance_m(&self) -> Option<f64> {
+        self.missions.iter().filter_map(|m| m.goal_distance_m).reduce(f64::max)
+    }
+}
+
+impl Default for RunRecord {
+    fn default() -> Self {
+        Self {
+            problem: String::new(),
+            planner: String::new(),
+            run: 0,
+            seed: 0,
+            cost: f64::INFINITY,
+            feasible: false,
+            length_m: None,
+            travel_time_s: None,
+            evaluations: 0,
+            iterations: 0,
+            elapsed_s: 0.0,
+            stop_reason: StopReason::Completed,
+            history: Vec::new(),
+            waypoints: Vec::new(),
+            status: None,
+            expansions: 0,
+            samples: 0,
+            motion_checks: 0,
+            graph_nodes: 0,
+            missions: Vec::new(),
+        }
+    }
 }

@@ -127,6 +127,7 @@ mod tests {
             stop_reason: StopReason::MaxIterations,
             history: vec![],
             waypoints: vec![],
+            ..RunRecord::default()
         })
     }
 

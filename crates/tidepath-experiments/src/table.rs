@@ -4,6 +4,7 @@ use serde::{Deserialize, Serialize};
 
 use super::stats::{compare_to_reference, Summary};
 use super::RunRecord;
+use tidepath::planner::Status;
 
 /// Significance level of the rank-sum marks (lfhh2019 uses 0.05).
 pub const ALPHA: f64 = 0.05;
@@ -39,6 +40,9 @@ pub struct PlannerRow {
     pub gap_percent: Option<f64>,
     #[serde(default)]
     pub best_gap_percent: Option<f64>,
+    /// How many runs ended with each plan status, in order of severity (scenario runs only).
+    #[serde(default)]
+    pub statuses: Vec<(String, usize)>,
 }
 
 fn mean(xs: impl Iterator<Item = f64>) -> f64 {
@@ -95,6 +99,11 @@ pub fn rows_for(problem: &str, planners: &[String], records: &[RunRecord]) -> Ve
                 p_value,
                 gap_percent: None,
                 best_gap_percent: None,
+                statuses: Status::ALL
+                    .iter()
+                    .map(|st| (st.id().to_string(), runs.iter().filter(|r| r.status == Some(*st)).count()))
+                    .filter(|(_, n)| *n > 0)
+                    .collect(),
             }
         })
         .collect()
@@ -120,6 +129,12 @@ pub fn num(x: f64) -> String {
 /// The Markdown table `compare` prints.
 pub fn markdown(rows: &[PlannerRow], functions: bool) -> String {
     let reference = rows.first().map(|r| r.planner.as_str()).unwrap_or("");
+    // A column for each status that occurred, in order of severity.
+    let statuses: Vec<&str> = Status::ALL
+        .iter()
+        .map(|s| s.id())
+        .filter(|id| rows.iter().any(|r| r.statuses.iter().any(|(n, c)| n == id && *c > 0)))
+        .collect();
     let mut out = String::new();
     if functions {
         out.push_str(&format!(
@@ -127,10 +142,11 @@ pub fn markdown(rows: &[PlannerRow], functions: bool) -> String {
         ));
         out.push_str("|---|---|---|---|---|---|---|---|---|---|---|\n");
     } else {
+        let extra: String = statuses.iter().map(|s| format!(" {s} |")).collect();
         out.push_str(&format!(
-            "| planner | best | mean | std | worst | gap % best / mean | success | length m | travel s | evals/run | wall s/run | vs {reference} |\n"
+            "| planner | best | mean | std | worst | gap % best / mean | success |{extra} length m | travel s | evals/run | wall s/run | vs {reference} |\n"
         ));
-        out.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        out.push_str(&format!("|---|---|---|---|---|---|---|{}---|---|---|---|---|\n", "---|".repeat(statuses.len())));
     }
     for r in rows {
         let mark = match (&r.mark, r.p_value) {
@@ -158,8 +174,12 @@ pub fn markdown(rows: &[PlannerRow], functions: bool) -> String {
                 (Some(b), Some(m)) => format!("{b:.2} / {m:.2}"),
                 _ => "-".to_string(),
             };
+            let counts: String = statuses
+                .iter()
+                .map(|s| format!(" {} |", r.statuses.iter().find(|(n, _)| n == s).map_or(0, |(_, c)| *c)))
+                .collect();
             out.push_str(&format!(
-                "| {} | {} | {} | {} | {} | {gap} | {:.0}% | {} | {} | {:.0} | {} | {} |\n",
+                "| {} | {} | {} | {} | {} | {gap} | {:.0}% |{counts} {} | {} | {:.0} | {} | {} |\n",
                 r.planner,
                 num(r.best),
                 num(r.mean),

@@ -8,7 +8,8 @@ use tidepath::scenario::{PlanRequest, Scenario};
 /// A 700 x 500 m world with one disc between start and goal, still water: the case where
 /// `astar` and `visibility` both said `exact` with different costs.
 fn one_disc() -> Scenario {
-    let text = "name = \"one-disc\"\n[world]\ndimensions = 2\nbounds = { min = [0.0, 0.0, 0.0], max = [700.0, 500.0, 0.0] }\n\
+    let text =
+        "name = \"one-disc\"\n[world]\ndimensions = 2\nbounds = { min = [0.0, 0.0, 0.0], max = [700.0, 500.0, 0.0] }\n\
         [[world.obstacles]]\nkind = \"cylinder\"\ncenter = [350.0, 250.0]\nradius = 80.0\n\
         [vehicle]\nspeed = 1.5\nsafety_distance = 5.0\nmax_turn_deg = 180.0\n\
         [mission]\nstart = [50.0, 240.0, 0.0]\ngoal = [650.0, 260.0, 0.0]\n";
@@ -72,4 +73,81 @@ fn a_grid_path_costs_the_sum_of_its_motion_costs() {
     assert!(by_cost.cost.unwrap() <= by_len.cost.unwrap() + 1e-12, "{:?} vs {:?}", by_cost.cost, by_len.cost);
     assert!(by_len.length_m().unwrap() <= by_cost.length_m().unwrap() + 1e-9);
     assert_eq!(by_len.status, Status::Feasible, "length is not the scenario's cost: {}", by_len.reason);
+}
+
+/// A fleet in which one mission starts inside an obstacle: that mission is `invalid-start`,
+/// by name, and the other is still planned.
+#[test]
+fn one_invalid_mission_does_not_sink_the_fleet() {
+    let text =
+        "name = \"pair\"\n[world]\ndimensions = 2\nbounds = { min = [0.0, 0.0, 0.0], max = [1000.0, 1000.0, 0.0] }\n\
+        [[world.obstacles]]\nkind = \"cylinder\"\ncenter = [200.0, 800.0]\nradius = 50.0\n\
+        [vehicle]\nspeed = 2.0\nsafety_distance = 5.0\nmax_turn_deg = 180.0\n\
+        [[missions]]\nname = \"alpha\"\nstart = [100.0, 100.0, 0.0]\ngoal = [900.0, 100.0, 0.0]\n\
+        [[missions]]\nname = \"bravo\"\nstart = [200.0, 800.0, 0.0]\ngoal = [900.0, 800.0, 0.0]\n";
+    let s = Scenario::from_toml(text, "pair.toml").unwrap();
+    for id in ["astar", "visibility", "pso", "hybrid"] {
+        let r = plan(&s, id);
+        assert_eq!(r.status, Status::InvalidStart, "{id}: {}", r.reason);
+        assert!(r.reason.starts_with("mission bravo: missions[1].start"), "{id}: {}", r.reason);
+        assert_eq!(r.missions[1].status, Status::InvalidStart);
+        assert!(r.missions[1].waypoints.is_empty());
+        assert!(r.missions[0].status.is_success(), "{id}: alpha {}: {}", r.missions[0].status, r.missions[0].reason);
+        assert!(r.missions[0].waypoints.len() >= 2);
+    }
+}
+
+mod short {
+    use tidepath::optim::Progress;
+    use tidepath::planner::{Planner, PlannerOutput, Problem, RunOptions, SearchStats};
+    use tidepath::rng::Rng;
+    use tidepath::termination::{StopReason, Termination};
+
+    /// A planner that gets only half way: the path a tree planner returns when time runs out.
+    pub struct HalfWay;
+
+    impl Planner for HalfWay {
+        fn id(&self) -> &'static str {
+            "half-way"
+        }
+
+        fn plan(
+            &mut self,
+            problem: &Problem<'_>,
+            _: &Termination,
+            _: &mut Rng,
+            _: RunOptions<'_>,
+            _: &mut dyn FnMut(&Progress),
+        ) -> PlannerOutput {
+            let paths = problem.missions.iter().map(|m| vec![m.start, (m.start + m.goal) * 0.5]).collect();
+            PlannerOutput {
+                paths,
+                claim: None,
+                stats: SearchStats { stop_reason: StopReason::WallTime, ..SearchStats::default() },
+            }
+        }
+    }
+}
+
+#[test]
+fn a_path_that_stops_short_reports_the_distance_left() {
+    use tidepath::planner::{registry::BuildPlanner, PlannerSettings};
+    use tidepath::registry::{no_params, Entry};
+    let registry = tidepath::planner::registry().with(Entry {
+        id: "half-way",
+        description: "stops half way",
+        citation: "test",
+        params: &[],
+        defaults: no_params,
+        build: BuildPlanner::Direct(|_: &PlannerSettings| Ok(Box::new(short::HalfWay))),
+    });
+    let s = one_disc();
+    let req = PlanRequest { planner: Some("half-way".into()), time_limit_s: Some(1.0), ..PlanRequest::default() };
+    let r = s.plan_with(&registry, &req, &mut |_| {}).unwrap();
+    let m = &r.missions[0];
+    let expected = Vec3::new(50.0, 240.0, 0.0).distance(Vec3::new(650.0, 260.0, 0.0)) / 2.0;
+    assert!((m.goal_distance_m.unwrap() - expected).abs() < 1e-9, "{:?}", m.goal_distance_m);
+    assert_eq!(r.status, Status::Timeout, "{}", r.reason);
+    assert!(!m.feasible);
+    assert!(r.reason.contains("short of the goal"), "{}", r.reason);
 }

@@ -175,7 +175,7 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
     let several = r.missions.len() > 1;
     for m in &r.missions {
         let indent = if several {
-            println!("  mission {}: {}", m.name, if m.feasible { "feasible" } else { "NOT feasible" });
+            println!("  mission {}: {}: {}", m.name, m.status, m.reason);
             "    "
         } else {
             "  "
@@ -183,6 +183,9 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
         if m.waypoints.is_empty() {
             println!("{indent}no path");
             continue;
+        }
+        if let Some(d) = m.goal_distance_m {
+            println!("{indent}goal distance  {d:.1} m left from the path's last point to the goal");
         }
         let terms: Vec<String> =
             m.cost_terms.iter().map(|(k, v)| format!("{k} {:.4}", v.as_f64().unwrap_or(f64::NAN))).collect();

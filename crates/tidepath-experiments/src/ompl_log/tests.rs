@@ -1,4 +1,5 @@
 use super::format::{real, utc_date_time};
+use super::writer::run_values;
 use super::*;
 use crate::RunRecord;
 use tidepath::optim::StopReason;
@@ -30,6 +31,7 @@ fn record(
         stop_reason,
         history,
         waypoints: path.map(|p| vec![[0.0, 0.0, -5.0]; p.2]).unwrap_or_default(),
+        ..RunRecord::default()
     }
 }
 
@@ -110,7 +112,7 @@ stop_reason|max iterations|max evaluations|wall time|max expansions|max samples|
 2 planners
 tidepath_pso
 0 common properties
-13 properties for each run
+18 properties for each run
 time REAL
 simplification time REAL
 solved BOOLEAN
@@ -124,9 +126,14 @@ evaluations INTEGER
 iterations INTEGER
 stop_reason ENUM
 seed TEXT
+solution difference REAL
+expansions INTEGER
+samples INTEGER
+motion checks INTEGER
+graph states INTEGER
 2 runs
-0.5; 0; 1; 0; 6; 1000.25; 2; 12.5; 800.5; 120; 2; 0; 11; 
-0.25; 0; 0; 1; 5; 1500; 3; 30; 1300; 120; 2; 1; 18446744073709551615; 
+0.5; 0; 1; 0; 6; 1000.25; 2; 12.5; 800.5; 120; 2; 0; 11; ; 0; 0; 0; 0; 
+0.25; 0; 0; 1; 5; 1500; 3; 30; 1300; 120; 2; 1; 18446744073709551615; 0; 0; 0; 0; 0; 
 3 progress properties for each run
 time REAL
 iterations INTEGER
@@ -137,7 +144,7 @@ best cost REAL
 .
 tidepath_ga
 0 common properties
-13 properties for each run
+18 properties for each run
 time REAL
 simplification time REAL
 solved BOOLEAN
@@ -151,8 +158,13 @@ evaluations INTEGER
 iterations INTEGER
 stop_reason ENUM
 seed TEXT
+solution difference REAL
+expansions INTEGER
+samples INTEGER
+motion checks INTEGER
+graph states INTEGER
 1 runs
-0.5; 0; 0; ; 4; ; ; ; ; 0; 0; 0; 8; 
+0.5; 0; 0; ; 4; ; ; ; ; 0; 0; 0; 8; ; 0; 0; 0; 0; 
 .
 "
     );
@@ -287,6 +299,33 @@ fn free_text_cannot_break_the_layout() {
     assert!(log.contains("\n0 seconds per run\n"));
     assert!(log.contains("\n0 seconds spent to collect the data\n"));
     assert_eq!(parse_like_ompl(&log)[0].0, "tidepath_p_s_o");
+}
+
+/// The plan's own status decides OMPL's: a path that stops short is an approximate solution
+/// with its distance left; proofs, bad endpoints and cancellations keep their own values.
+#[test]
+fn plan_statuses_map_to_ompl_statuses() {
+    use tidepath::planner::Status;
+    let mut r = fixture().remove(0);
+    r.status = Some(Status::Timeout);
+    r.missions = vec![crate::record::MissionRecord {
+        name: "m".into(),
+        status: Status::Timeout,
+        waypoints: r.waypoints.clone(),
+        goal_distance_m: Some(42.5),
+    }];
+    let v = run_values(&r);
+    assert_eq!((v[2].as_str(), v[3].as_str(), v[4].as_str(), v[13].as_str()), ("0", "1", "5", "42.5"));
+    for (status, value) in [
+        (Status::Exact, "6"),
+        (Status::InvalidStart, "1"),
+        (Status::InvalidGoal, "2"),
+        (Status::Unreachable, "9"),
+        (Status::Cancelled, "8"),
+    ] {
+        r.status = Some(status);
+        assert_eq!(run_values(&r)[4], value, "{status}");
+    }
 }
 
 #[test]

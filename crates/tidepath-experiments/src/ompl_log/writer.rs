@@ -10,7 +10,7 @@ use tidepath::optim::StopReason;
 /// Run properties, in the order their values are written. Names match OMPL's where the meaning
 /// matches (so the columns are shared in a mixed database); `memory` is left out on purpose:
 /// tidepath does not measure it and a 0 would be plotted as a measurement.
-const RUN_PROPERTIES: [&str; 13] = [
+const RUN_PROPERTIES: [&str; 18] = [
     "time REAL",
     // Truly 0 (tidepath does not simplify paths), and needed: once an OMPL log has added this
     // column, the script's views compute `time + simplification_time`, NULL for a NULL here.
@@ -26,6 +26,13 @@ const RUN_PROPERTIES: [&str; 13] = [
     "iterations INTEGER",
     "stop_reason ENUM",
     "seed TEXT",
+    // OMPL's name for an approximate solution's distance to the goal.
+    "solution difference REAL",
+    "expansions INTEGER",
+    "samples INTEGER",
+    // OMPL's "valid segment" checks: motions judged by the validator.
+    "motion checks INTEGER",
+    "graph states INTEGER",
 ];
 
 /// The same progress columns as OMPL's RRT*, so Planner Arena's progress page overlays them.
@@ -35,9 +42,15 @@ const PROGRESS_PROPERTIES: [&str; 3] = ["time REAL", "iterations INTEGER", "best
 /// "Unknown status").
 const STATUS_ENUM: &str = "status|Unknown status|Invalid start|Invalid goal|Unrecognized goal type|Timeout|\
                            Approximate solution|Exact solution|Crash|Unknown status|Unknown status";
+const STATUS_INVALID_START: u8 = 1;
+const STATUS_INVALID_GOAL: u8 = 2;
 const STATUS_TIMEOUT: u8 = 4;
 const STATUS_APPROXIMATE: u8 = 5;
 const STATUS_EXACT: u8 = 6;
+/// OMPL's ABORT (a run stopped by the caller) and INFEASIBLE (proved: no solution exist):
+/// their names print as "Unknown status" in OMPL 2.0.1's enum line, but the values stay apart.
+const STATUS_ABORT: u8 = 8;
+const STATUS_INFEASIBLE: u8 = 9;
 
 const STOP_REASON_ENUM: &str =
     "stop_reason|max iterations|max evaluations|wall time|max expansions|max samples|target cost|cancelled|completed";
@@ -127,16 +140,34 @@ fn write_planner(out: &mut String, name: &str, runs: &[&RunRecord]) -> fmt::Resu
     writeln!(out, ".")
 }
 
-fn run_values(r: &RunRecord) -> [String; RUN_PROPERTIES.len()] {
-    // A run whose best cost never became finite found nothing, not even a best-effort path.
-    let found = r.cost.is_finite();
-    let (solved, approximate, status) = match (found, r.feasible) {
-        (true, true) => (true, Some(false), STATUS_EXACT),
-        // OMPL's meaning of an approximate solution: a path came back but does not solve the
-        // problem (here: it violates a constraint).
-        (true, false) => (false, Some(true), STATUS_APPROXIMATE),
-        (false, _) => (false, None, STATUS_TIMEOUT),
-    };
+/// OMPL's (solved, approximate solution, status) for a run: from the plan's own status when
+/// the run has one, else (function benchmarks, older records) from its cost and feasibility.
+fn ompl_status(r: &RunRecord) -> (bool, Option<bool>, u8) {
+    use tidepath::planner::Status;
+    match r.status {
+        Some(Status::Exact | Status::Feasible) => (true, Some(false), STATUS_EXACT),
+        // OMPL's approximate solution: a path came back but does not solve the problem (it
+        // stops short of the goal, or violates a constraint).
+        Some(Status::Infeasible) if !r.waypoints.is_empty() => (false, Some(true), STATUS_APPROXIMATE),
+        Some(Status::Timeout) if !r.waypoints.is_empty() => (false, Some(true), STATUS_APPROXIMATE),
+        Some(Status::Infeasible | Status::Timeout) => (false, None, STATUS_TIMEOUT),
+        Some(Status::InvalidStart) => (false, None, STATUS_INVALID_START),
+        Some(Status::InvalidGoal) => (false, None, STATUS_INVALID_GOAL),
+        Some(Status::Unreachable) => (false, None, STATUS_INFEASIBLE),
+        Some(Status::Cancelled) => (false, None, STATUS_ABORT),
+        // A run whose best cost never became finite found nothing, not even a best-effort path.
+        None => match (r.cost.is_finite(), r.feasible) {
+            (true, true) => (true, Some(false), STATUS_EXACT),
+            (true, false) => (false, Some(true), STATUS_APPROXIMATE),
+            (false, _) => (false, None, STATUS_TIMEOUT),
+        },
+    }
+}
+
+pub(super) fn run_values(r: &RunRecord) -> [String; RUN_PROPERTIES.len()] {
+    let (solved, approximate, status) = ompl_status(r);
+    // The distance left to the goal, for approximate solutions (0 when the path reaches it).
+    let difference = (approximate == Some(true)).then(|| r.goal_distance_m().unwrap_or(0.0));
     let segments = (!r.waypoints.is_empty()).then(|| r.waypoints.len() - 1);
     [
         real(r.elapsed_s),
@@ -152,6 +183,11 @@ fn run_values(r: &RunRecord) -> [String; RUN_PROPERTIES.len()] {
         r.iterations.to_string(),
         stop_reason_value(r.stop_reason).to_string(),
         r.seed.to_string(),
+        difference.map(real).unwrap_or_default(),
+        r.expansions.to_string(),
+        r.samples.to_string(),
+        r.motion_checks.to_string(),
+        r.graph_nodes.to_string(),
     ]
 }
 

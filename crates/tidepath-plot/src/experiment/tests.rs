@@ -81,6 +81,7 @@ fn records_group_by_first_appearance() {
         stop_reason: tidepath::optim::StopReason::MaxIterations,
         history: vec![None, Some(cost)],
         waypoints: vec![],
+        ..RunRecord::default()
     };
     let records = [rec("b", "pso", 1.0), rec("a", "de", 2.0), rec("b", "de", 3.0), rec("b", "pso", 4.0)];
     let g = group_runs(&records);

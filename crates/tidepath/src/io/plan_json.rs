@@ -11,8 +11,10 @@ use crate::path::{Metrics, Violation};
 use crate::planner::{MissionPlan, Plan, Status};
 use crate::termination::StopReason;
 
-/// The version this build writes.
-pub const PLAN_FORMAT_VERSION: u32 = 2;
+/// The version this build writes. Version 3 adds each mission's own status, reason and
+/// distance left to the goal, and the search's checks and graph size; files of versions 1 and
+/// 2 still load.
+pub const PLAN_FORMAT_VERSION: u32 = 3;
 
 /// Most points a plan file's path may hold: far beyond any planner's output, small enough to
 /// evaluate in well under a second.
@@ -29,6 +31,8 @@ pub struct PlanAbout {
     pub time_limit_s: Option<f64>,
     /// The time limit was the default cap (nothing else set one).
     pub default_time_cap: bool,
+    /// A warm start was given and the planner uses warm starts.
+    pub warm_start: bool,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -51,6 +55,18 @@ pub struct MissionReport {
     pub feasible: bool,
     pub violations: Vec<Violation>,
     pub metrics: Option<Metrics>,
+    /// This mission's status and why (version 3; a plan's status is the worst of these).
+    #[serde(default = "unknown_status")]
+    pub status: Status,
+    #[serde(default)]
+    pub reason: String,
+    /// The distance (m) from the path's last point to the goal when it stops short.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goal_distance_m: Option<f64>,
+}
+
+fn unknown_status() -> Status {
+    Status::Infeasible
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -78,6 +94,19 @@ pub struct PlanReport {
     pub iterations: u64,
     pub expansions: u64,
     pub samples: u64,
+    /// Validator calls made for the planner (OMPL's valid states and motions) and the size of
+    /// the graph a graph planner built; 0 where not counted.
+    #[serde(default)]
+    pub state_checks: u64,
+    #[serde(default)]
+    pub motion_checks: u64,
+    #[serde(default)]
+    pub graph_nodes: u64,
+    #[serde(default)]
+    pub graph_edges: u64,
+    /// Whether the run started from a warm start (`--init`) and the planner used it.
+    #[serde(default)]
+    pub warm_start: bool,
     pub stop_reason: StopReason,
     pub elapsed_s: f64,
     /// The wall-time limit of the run (s), and whether it was the default cap.
@@ -126,6 +155,9 @@ impl MissionReport {
             feasible: m.feasible,
             violations: m.violations.clone(),
             metrics: m.metrics,
+            status: m.status,
+            reason: m.reason.clone(),
+            goal_distance_m: m.goal_distance_m,
         }
     }
 
@@ -157,6 +189,11 @@ impl PlanReport {
             iterations: s.iterations,
             expansions: s.expansions,
             samples: s.samples,
+            state_checks: s.state_checks,
+            motion_checks: s.motion_checks,
+            graph_nodes: s.graph_nodes,
+            graph_edges: s.graph_edges,
+            warm_start: about.warm_start,
             stop_reason: s.stop_reason,
             elapsed_s: s.elapsed.as_secs_f64(),
             time_limit_s: about.time_limit_s,

@@ -5,6 +5,7 @@
 use super::{Claim, Planner, Problem, RunOptions, SearchStats, Status};
 use crate::error::Result;
 use crate::geom::Vec3;
+use crate::mission::Mission;
 use crate::optim::Progress;
 use crate::path::{Metrics, PathModel, Violation};
 use crate::rng::Rng;
@@ -35,6 +36,12 @@ pub struct MissionPlan {
     pub feasible: bool,
     pub violations: Vec<Violation>,
     pub metrics: Option<Metrics>,
+    /// This mission's own status and its one-line reason.
+    pub status: Status,
+    pub reason: String,
+    /// When the final path stops short of the goal (a planner that ran out of time on the
+    /// way), the straight distance left from its last point to the goal (m).
+    pub goal_distance_m: Option<f64>,
 }
 
 impl MissionPlan {
@@ -43,8 +50,11 @@ impl MissionPlan {
         self.smoothed.as_deref().unwrap_or(&self.waypoints)
     }
 
-    fn unplanned(name: &str) -> Self {
+    fn unplanned(name: &str, status: Status, reason: String) -> Self {
         Self {
+            status,
+            reason,
+            goal_distance_m: None,
             name: name.to_string(),
             waypoints: Vec::new(),
             smoothed: None,
@@ -93,6 +103,9 @@ pub fn judge(model: &PathModel<'_>, cost: &dyn crate::cost::CostModel, points: &
         cost: total,
         terms,
         feasible: violations.is_empty(),
+        status: if violations.is_empty() { Status::Feasible } else { Status::Infeasible },
+        reason: violations.first().map_or_else(|| "no constraint violated".to_string(), |v| v.message.clone()),
+        goal_distance_m: points.last().map(|p| p.distance(model.goal)).filter(|&d| d > 0.0),
         violations,
         metrics: Some(model.metrics(points)),
     }
@@ -109,6 +122,11 @@ pub fn mission_field(problem: &Problem<'_>, i: usize, what: &str) -> String {
 
 /// Runs `planner` on `problem` and judges the result. Errors are bad input (termination,
 /// planner settings); everything the planning finds is in the plan's status.
+///
+/// Each mission gets its own status: a mission whose start or goal is invalid, or whose goal
+/// is provably unreachable, is reported so and left out; the planner plans the others (jointly
+/// when it plans fleets jointly). The plan's status is the worst of its missions', and its
+/// reason names that mission.
 pub fn solve(
     planner: &mut dyn Planner,
     problem: &Problem<'_>,
@@ -121,95 +139,144 @@ pub fn solve(
     // The run's one clock starts here: every stage below draws on the same deadline.
     let termination = &termination.started_now();
     let id = planner.id().to_string();
-    let models: Vec<PathModel<'_>> = (0..problem.missions.len()).map(|i| problem.path_model(i)).collect();
-    let unplanned = |status, reason| Plan {
-        planner: id.clone(),
-        status,
-        reason,
-        missions: problem.missions.iter().map(|m| MissionPlan::unplanned(&m.name)).collect(),
-        cost: f64::INFINITY,
-        stats: SearchStats::default(),
-    };
+    let n = problem.missions.len();
+    let models: Vec<PathModel<'_>> = (0..n).map(|i| problem.path_model(i)).collect();
+    // Missions that cannot be planned, with their status and reason.
+    let mut refused: Vec<Option<(Status, String)>> = vec![None; n];
     for (i, (m, model)) in problem.missions.iter().zip(&models).enumerate() {
         if let Err(issue) = model.validator.state(m.start, m.departure_time) {
             let why = model.validator.describe(m.start, issue);
-            return Ok(unplanned(Status::InvalidStart, format!("{}: {why}", mission_field(problem, i, "start"))));
-        }
-        if let Err(issue) = model.validator.fixed_state(m.goal) {
+            refused[i] = Some((Status::InvalidStart, format!("{}: {why}", mission_field(problem, i, "start"))));
+        } else if let Err(issue) = model.validator.fixed_state(m.goal) {
             let why = model.validator.describe(m.goal, issue);
-            return Ok(unplanned(Status::InvalidGoal, format!("{}: {why}", mission_field(problem, i, "goal"))));
+            refused[i] = Some((Status::InvalidGoal, format!("{}: {why}", mission_field(problem, i, "goal"))));
         }
     }
-
-    for i in 0..problem.missions.len() {
-        if let Some(reason) = super::reachability::unreachable(problem, i, termination) {
-            return Ok(unplanned(Status::Unreachable, reason));
+    for (i, r) in refused.iter_mut().enumerate() {
+        if r.is_none() {
+            if let Some(reason) = super::reachability::unreachable(problem, i, termination) {
+                *r = Some((Status::Unreachable, reason));
+            }
         }
     }
-    // Whether this planner takes this problem (a setting, or a world it does not cover).
-    planner.check(problem)?;
-
-    let mut out = planner.plan(problem, termination, rng, options.run, observer);
-    if let Some(Claim::Unreachable(reason)) = &out.claim {
-        return Ok(Plan { stats: out.stats, ..unplanned(Status::Unreachable, reason.clone()) });
+    let planned: Vec<usize> = (0..n).filter(|&i| refused[i].is_none()).collect();
+    let mut stats = SearchStats::default();
+    let mut missions: Vec<MissionPlan> = problem
+        .missions
+        .iter()
+        .zip(&refused)
+        .map(|(m, r)| {
+            let (status, reason) = r.clone().unwrap_or((Status::Infeasible, "the planner returned no path".into()));
+            MissionPlan::unplanned(&m.name, status, reason)
+        })
+        .collect();
+    let mut claim = None;
+    if !planned.is_empty() {
+        // The planner sees only the missions it can plan, in their order.
+        let subset: Vec<Mission> = planned.iter().map(|&i| problem.missions[i].clone()).collect();
+        let sub = Problem { missions: &subset, ..*problem };
+        // Whether this planner takes this problem (a setting, or a world it does not cover).
+        planner.check(&sub)?;
+        let init: Option<Vec<Vec<Vec3>>> =
+            options.run.init.map(|all| planned.iter().map(|&i| all.get(i).cloned().unwrap_or_default()).collect());
+        let run = RunOptions { init: init.as_deref(), ..options.run };
+        let mut out = planner.plan(&sub, termination, rng, run, observer);
+        for (k, &i) in planned.iter().enumerate() {
+            let m = &problem.missions[i];
+            if let Some(Claim::Unreachable(reason)) = &out.claim {
+                missions[i] = MissionPlan::unplanned(&m.name, Status::Unreachable, reason.clone());
+                continue;
+            }
+            let raw = out.paths.get(k).cloned().unwrap_or_default();
+            if raw.len() < 2 {
+                continue;
+            }
+            let model = &models[i];
+            missions[i] = match options.smoother {
+                None => judge(model, problem.cost, &raw, &m.name),
+                Some(s) => {
+                    let smoothed = s.smooth(model, problem.cost, &raw, termination);
+                    // A smoother cut by the clock or the stop flag is what stopped the run.
+                    if let (Some(r), false) = (termination.interrupted(), is_interruption(out.stats.stop_reason)) {
+                        out.stats.stop_reason = r;
+                    }
+                    let raw_cost = problem.cost.breakdown(model, &raw).0;
+                    let mut j = judge(model, problem.cost, &smoothed, &m.name);
+                    j.waypoints = raw;
+                    j.smoothed = Some(smoothed);
+                    j.raw_cost = Some(raw_cost);
+                    j
+                }
+            };
+        }
+        stats = out.stats;
+        claim = out.claim;
     }
-    let mut missions = Vec::with_capacity(problem.missions.len());
-    for (i, m) in problem.missions.iter().enumerate() {
-        let raw = out.paths.get(i).cloned().unwrap_or_default();
-        if raw.len() < 2 {
-            missions.push(MissionPlan::unplanned(&m.name));
+    // Each planned mission's status from its own direct checks and why the run stopped.
+    for &i in &planned {
+        let m = &mut missions[i];
+        if matches!(m.status, Status::Unreachable) {
             continue;
         }
-        let model = &models[i];
-        let mission = match options.smoother {
-            None => judge(model, problem.cost, &raw, &m.name),
-            Some(s) => {
-                let smoothed = s.smooth(model, problem.cost, &raw, termination);
-                // A smoother cut by the clock or the stop flag is what stopped the run.
-                if let (Some(r), false) = (termination.interrupted(), is_interruption(out.stats.stop_reason)) {
-                    out.stats.stop_reason = r;
+        let left = m.goal_distance_m.map_or(String::new(), |d| format!("; it stops {d:.1} m short of the goal"));
+        (m.status, m.reason) = if m.feasible {
+            match &claim {
+                Some(Claim::Optimal { space, scenario_cost: true, .. }) => {
+                    (Status::Exact, optimal_reason(problem.cost, "the scenario's cost model", space))
                 }
-                let raw_cost = problem.cost.breakdown(model, &raw).0;
-                let mut j = judge(model, problem.cost, &smoothed, &m.name);
-                j.waypoints = raw;
-                j.smoothed = Some(smoothed);
-                j.raw_cost = Some(raw_cost);
-                j
+                Some(Claim::Optimal { space, objective, .. }) => (
+                    Status::Feasible,
+                    format!(
+                        "no constraint violated; optimal for {objective} {space}, not for the scenario's cost model"
+                    ),
+                ),
+                _ => (Status::Feasible, "no constraint violated".to_string()),
+            }
+        } else {
+            let first = first_problem(m);
+            let hint = match &claim {
+                Some(Claim::Hint(h)) => format!("; {h}"),
+                _ => String::new(),
+            };
+            match stats.stop_reason {
+                StopReason::WallTime => (
+                    Status::Timeout,
+                    format!(
+                        "the wall-time limit of {:.3} s stopped the run before a feasible path was found; {first}{left}{hint}",
+                        termination.wall_time.map_or(0.0, |d| d.as_secs_f64())
+                    ),
+                ),
+                StopReason::Cancelled => (
+                    Status::Cancelled,
+                    format!("the run was cancelled before a feasible path was found; {first}{left}"),
+                ),
+                _ => (Status::Infeasible, format!("{first}{left}{hint}")),
             }
         };
-        missions.push(mission);
     }
     let cost = missions.iter().map(|m| m.cost).sum();
-    let all_feasible = missions.iter().all(|m| m.feasible);
-    let (status, reason) = if all_feasible {
-        match &out.claim {
-            Some(Claim::Optimal { space, scenario_cost: true, .. }) => {
-                (Status::Exact, optimal_reason(problem.cost, "the scenario's cost model", space))
-            }
-            Some(Claim::Optimal { space, objective, .. }) => (
-                Status::Feasible,
-                format!("no constraint violated; optimal for {objective} {space}, not for the scenario's cost model"),
-            ),
-            _ => (Status::Feasible, "no constraint violated".to_string()),
-        }
-    } else {
-        let first = first_problem(&missions);
-        match out.stats.stop_reason {
-            StopReason::WallTime => (
-                Status::Timeout,
-                format!(
-                    "the wall-time limit of {:.3} s stopped the run before a feasible path was found; {first}",
-                    termination.wall_time.map_or(0.0, |d| d.as_secs_f64())
-                ),
-            ),
-            _ => (Status::Infeasible, first),
-        }
+    let (status, reason) = overall(&missions);
+    Ok(Plan { planner: id, status, reason, missions, cost, stats })
+}
+
+/// The plan's status: the worst of its missions'; the reason is that mission's, named when
+/// there are several.
+fn overall(missions: &[MissionPlan]) -> (Status, String) {
+    let Some(worst) = missions.iter().max_by_key(|m| m.status.severity()) else {
+        return (Status::Infeasible, "no mission".into());
     };
-    let reason = match (&out.claim, status) {
-        (Some(Claim::Hint(h)), Status::Infeasible | Status::Timeout) => format!("{reason}; {h}"),
-        _ => reason,
-    };
-    Ok(Plan { planner: id, status, reason, missions, cost, stats: out.stats })
+    if missions.len() == 1 {
+        return (worst.status, worst.reason.clone());
+    }
+    let failing = missions.iter().filter(|m| !m.status.is_success()).count();
+    if failing == 0 {
+        let all_exact = missions.iter().all(|m| m.status == Status::Exact);
+        let what = if all_exact { &worst.reason } else { "no constraint violated" };
+        return (worst.status, format!("all {} missions: {what}", missions.len()));
+    }
+    let more =
+        if failing > 1 { format!(" ({} of {} missions not flyable)", failing, missions.len()) } else { String::new() };
+    (worst.status, format!("mission {}: {}{more}", worst.name, worst.reason))
 }
 
 /// "optimal for the scenario's cost model on SPACE", saying which terms the optimality covers
@@ -232,17 +299,15 @@ fn is_interruption(r: StopReason) -> bool {
     matches!(r, StopReason::WallTime | StopReason::Cancelled)
 }
 
-/// The first violation of the first infeasible mission, and how many more there are.
-fn first_problem(missions: &[MissionPlan]) -> String {
-    let several = missions.len() > 1;
-    let total: usize = missions.iter().map(|m| m.violations.len()).sum();
-    let Some(m) = missions.iter().find(|m| !m.feasible) else {
-        return String::new();
-    };
-    let prefix = if several { format!("{}: ", m.name) } else { String::new() };
+/// The first violation of a mission's path, and how many more there are.
+fn first_problem(m: &MissionPlan) -> String {
     let Some(v) = m.violations.first() else {
-        return format!("{prefix}the planner returned no path");
+        return "the planner returned no path".to_string();
     };
-    let more = if total > 1 { format!(" (and {} more violations)", total - 1) } else { String::new() };
-    format!("{prefix}{}{more}", v.message)
+    let more = if m.violations.len() > 1 {
+        format!(" (and {} more violations)", m.violations.len() - 1)
+    } else {
+        String::new()
+    };
+    format!("{}{more}", v.message)
 }

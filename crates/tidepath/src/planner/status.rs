@@ -21,6 +21,8 @@ pub enum Status {
     InvalidGoal,
     /// Proved: no path connects start and goal for this vehicle.
     Unreachable,
+    /// The caller stopped the run (Ctrl-C, a stop flag) before a feasible path was found.
+    Cancelled,
 }
 
 impl Status {
@@ -33,20 +35,50 @@ impl Status {
             Status::InvalidStart => "invalid-start",
             Status::InvalidGoal => "invalid-goal",
             Status::Unreachable => "unreachable",
+            Status::Cancelled => "cancelled",
         }
     }
+
+    /// How bad the status is, for the worst of a fleet's missions: flyable first, then a
+    /// search that ran out (time, a stop), a path that breaks constraints, a proof that none
+    /// exists, and bad input last.
+    pub fn severity(self) -> u8 {
+        match self {
+            Status::Exact => 0,
+            Status::Feasible => 1,
+            Status::Cancelled => 2,
+            Status::Timeout => 3,
+            Status::Infeasible => 4,
+            Status::Unreachable => 5,
+            Status::InvalidGoal => 6,
+            Status::InvalidStart => 7,
+        }
+    }
+
+    /// Every status, in order of severity.
+    pub const ALL: [Status; 8] = [
+        Status::Exact,
+        Status::Feasible,
+        Status::Cancelled,
+        Status::Timeout,
+        Status::Infeasible,
+        Status::Unreachable,
+        Status::InvalidGoal,
+        Status::InvalidStart,
+    ];
 
     /// Exact and feasible plans can be flown; everything else cannot.
     pub fn is_success(self) -> bool {
         matches!(self, Status::Exact | Status::Feasible)
     }
 
-    /// The process exit code the CLI uses: 0 for a plan that can be flown, 1 otherwise.
+    /// The process exit code the CLI uses: 0 for a plan that can be flown, 130 for a run the
+    /// user interrupted, 1 otherwise.
     pub fn exit_code(self) -> i32 {
-        if self.is_success() {
-            0
-        } else {
-            1
+        match self {
+            s if s.is_success() => 0,
+            Status::Cancelled => 130,
+            _ => 1,
         }
     }
 }

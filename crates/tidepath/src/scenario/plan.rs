@@ -173,6 +173,7 @@ impl Scenario {
             travel_time_model: self.settings.travel.id().to_string(),
             time_limit_s: termination.wall_time.map(|d| d.as_secs_f64()),
             default_time_cap: limit_source == LimitSource::DefaultCap,
+            warm_start: req.init.is_some(),
         };
         Ok(PlanReport::new(&plan, about).with_frame(self.frame.as_ref(), self.epoch))
     }
