@@ -14,7 +14,7 @@ import os
 import numpy as np
 from netCDF4 import Dataset
 
-OUT = os.path.join(os.path.dirname(__file__), "..", "crates", "tidepath", "tests", "data", "geo")
+OUT = os.path.join(os.path.dirname(__file__), "..", "crates", "tidepath-io", "tests", "data", "geo")
 
 
 def plane(lon, lat):

@@ -1,4 +1,4 @@
-"""Writes crates/tidepath/data/salish_forecast.nc: a synthetic tidal current forecast over the
+"""Writes crates/tidepath-io/data/salish_forecast.nc: a synthetic tidal current forecast over the
 Strait of Juan de Fuca in the layout of a Copernicus Marine product (uo, vo as int16 with
 scale_factor and _FillValue; dimensions time, depth, latitude, longitude; time in hours since
 1950-01-01), so the built-in scenario `salish-forecast` exercises the current reader end to end.

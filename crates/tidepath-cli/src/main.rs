@@ -85,7 +85,7 @@ pub fn stop_flag() -> std::sync::Arc<std::sync::atomic::AtomicBool> {
         let f = flag.clone();
         let _ = ctrlc::set_handler(move || {
             if f.swap(true, Ordering::SeqCst) {
-                let _no_commit_in_progress = tidepath::io::output::commit_lock();
+                let _no_commit_in_progress = tidepath_io::output::commit_lock();
                 std::process::exit(130);
             }
         });

@@ -249,7 +249,7 @@ fn every_subcommand_has_help() {
 fn listings_show_the_demo_and_the_planners() {
     let s = String::from_utf8(tidepath(&["scenarios"], &[]).stdout).unwrap();
     // Every built-in, with the descriptions in one column however long the ids.
-    let column: Vec<usize> = tidepath::scenario::BUILTIN
+    let column: Vec<usize> = tidepath_io::scenario::BUILTIN
         .iter()
         .map(|e| {
             let line = s.lines().find(|l| l.split_whitespace().next() == Some(e.id)).expect(e.id);
@@ -290,7 +290,7 @@ fn smoothed_plans_are_evaluated_as_smoothed() {
 /// A fleet scenario: `plan` writes one timed path per mission and `eval` reports both.
 #[test]
 fn fleet_plans_and_evaluations_report_every_mission() {
-    let fleet = concat!(env!("CARGO_MANIFEST_DIR"), "/../tidepath/tests/data/fleet.toml");
+    let fleet = concat!(env!("CARGO_MANIFEST_DIR"), "/../tidepath-io/tests/data/fleet.toml");
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("fleet.json");
     let o = tidepath(&["plan", fleet, "--planner", "de", "--seed", "2", "--out", out.to_str().unwrap()], &[]);

@@ -12,7 +12,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "../../tidepath/tests/common/cdf1.rs"]
+#[path = "../../tidepath-io/tests/common/cdf1.rs"]
 mod cdf1;
 use cdf1::forecast_bomb;
 

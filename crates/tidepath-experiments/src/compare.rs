@@ -15,8 +15,8 @@ use tidepath::optim::functions::{Function, FunctionObjective};
 use tidepath::optim::{self, Optimizer};
 use tidepath::planner::build_optimizer;
 use tidepath::rng::run_rng;
-use tidepath::scenario::{PlanRequest, Scenario};
 use tidepath::termination::{check_count, check_wall_time, StopReason, Termination};
+use tidepath_io::scenario::{PlanRequest, Scenario};
 
 /// Budget overrides shared by every run of an experiment.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -312,7 +312,7 @@ pub fn compare_functions(
         max_evaluations: budget.evaluations.map(|n| check_count("--evaluations", n)).transpose()?,
         wall_time: Some(match budget.time_limit_s {
             Some(t) => check_wall_time("--time-limit", t)?,
-            None => check_wall_time("default time limit", tidepath::scenario::default_time_limit_s()?)?,
+            None => check_wall_time("default time limit", tidepath_io::scenario::default_time_limit_s()?)?,
         }),
         stop: control.stop.cloned(),
         ..Termination::default()

@@ -5,8 +5,8 @@ use std::path::Path;
 
 use super::compare::Comparison;
 use tidepath::error::Result;
-use tidepath::io::{write_atomic, Outputs};
-use tidepath::scenario::Scenario;
+use tidepath_io::scenario::Scenario;
+use tidepath_io::{write_atomic, Outputs};
 
 /// Fields that measure time and so differ between otherwise identical reruns.
 pub const TIMING_FIELDS: &[&str] = &["elapsed_s", "mean_wall_s", "total_wall_s"];

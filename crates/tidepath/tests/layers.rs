@@ -42,12 +42,11 @@ const ORDER: &[&str] = &[
     "optim",
     "smoothing",
     "planner",
-    "io",
-    "scenario",
 ];
 
 /// The workspace's crates, lowest first: each may depend only on the ones before it.
-const CRATES: &[&str] = &["tidepath-search", "tidepath", "tidepath-experiments", "tidepath-plot", "tidepath-cli"];
+const CRATES: &[&str] =
+    &["tidepath-search", "tidepath", "tidepath-io", "tidepath-experiments", "tidepath-plot", "tidepath-cli"];
 
 /// One reference from a layer's non-test code to a crate module.
 #[derive(Debug, Clone)]
@@ -547,12 +546,13 @@ fn no_module_uses_a_layer_above_it() {
     let unread: Vec<_> = files.keys().filter(|f| !s.checked.contains(*f) && !s.test_files.contains(*f)).collect();
     assert!(unread.is_empty(), "files no `mod` reaches: {unread:?}");
 
-    // The checker must be seeing the code: counts well below today's (527 crate paths, 368
-    // of them across layers, 77 files) would mean it stopped resolving something.
+    // The checker must be seeing the code: counts well below today's (381 crate paths, 261
+    // of them across layers, 60 files, once scenarios and files moved to tidepath-io) would
+    // mean it stopped resolving something.
     let across = s.uses.iter().filter(|u| u.from != u.to).count();
-    assert!(s.uses.len() > 400, "only {} crate paths seen", s.uses.len());
-    assert!(across > 280, "only {across} paths across layers seen");
-    assert!(s.checked.len() > 60, "only {} files read", s.checked.len());
+    assert!(s.uses.len() > 300, "only {} crate paths seen", s.uses.len());
+    assert!(across > 200, "only {across} paths across layers seen");
+    assert!(s.checked.len() > 48, "only {} files read", s.checked.len());
 
     let wrong = upward(&s.uses, ORDER);
     assert!(wrong.is_empty(), "upward uses (see ORDER in this file):\n{}", wrong.join("\n"));

@@ -1,13 +1,13 @@
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
-use tidepath::io::Outputs;
 use tidepath::optim::functions::Function;
 use tidepath::Error;
 use tidepath_experiments::compare::{compare_functions, FunctionProblem, RunBudget};
 use tidepath_experiments::output;
 use tidepath_experiments::runner::RunControl;
 use tidepath_experiments::table::markdown;
+use tidepath_io::Outputs;
 
 use crate::progress::RunsBar;
 use crate::Outcome;

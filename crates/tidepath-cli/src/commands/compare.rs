@@ -1,14 +1,14 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use tidepath::io::Outputs;
-use tidepath::scenario;
-use tidepath::scenario::PlanRequest;
 use tidepath::Error;
 use tidepath_experiments::compare::{compare_scenario, default_reference, RunBudget};
 use tidepath_experiments::output;
 use tidepath_experiments::runner::RunControl;
 use tidepath_experiments::table::markdown;
+use tidepath_io::scenario;
+use tidepath_io::scenario::PlanRequest;
+use tidepath_io::Outputs;
 
 use crate::progress::RunsBar;
 use crate::Outcome;

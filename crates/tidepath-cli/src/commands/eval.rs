@@ -1,9 +1,9 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use tidepath::io::PlanFile;
-use tidepath::scenario;
 use tidepath::Error;
+use tidepath_io::scenario;
+use tidepath_io::PlanFile;
 
 use crate::Outcome;
 

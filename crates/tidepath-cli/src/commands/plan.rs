@@ -1,10 +1,10 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use tidepath::io::export::{export, ExportFormat, Georef};
-use tidepath::io::{Outputs, PlanFile, PlanReport};
-use tidepath::scenario::{self, PlanRequest, Scenario};
 use tidepath::Error;
+use tidepath_io::export::{export, ExportFormat, Georef};
+use tidepath_io::scenario::{self, PlanRequest, Scenario};
+use tidepath_io::{Outputs, PlanFile, PlanReport};
 use tidepath_plot::{render_plan_figure, PlanFigure, PlotPath};
 
 use crate::progress::DelayedBar;

@@ -1,9 +1,9 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use tidepath::io::Outputs;
 use tidepath::Error;
 use tidepath_experiments::reproduce::{paper, reproduce, ClaimVerdict, ReproduceOptions, PAPERS, REPORT_FILE};
+use tidepath_io::Outputs;
 
 use crate::progress::RunsBar;
 use crate::Outcome;

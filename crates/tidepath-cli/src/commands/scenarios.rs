@@ -1,6 +1,6 @@
 use clap::Args;
-use tidepath::scenario::BUILTIN;
 use tidepath::Error;
+use tidepath_io::scenario::BUILTIN;
 
 use crate::Outcome;
 
@@ -19,7 +19,7 @@ pub fn list() -> Result<Outcome, Error> {
 }
 
 pub fn show(args: &ShowArgs) -> Result<Outcome, Error> {
-    let mut registry = tidepath::scenario::registry();
+    let mut registry = tidepath_io::scenario::registry();
     registry.field = "NAME";
     print!("{}", registry.get(&args.name)?.build);
     Ok(Outcome::Success)

@@ -14,8 +14,8 @@ use std::path::Path;
 
 use super::compare::Comparison;
 use tidepath::error::{Error, Result};
-use tidepath::io::Outputs;
 use tidepath::registry::{no_params, Entry, Registry};
+use tidepath_io::Outputs;
 
 /// Options shared by every reproduction.
 #[derive(Clone, Debug)]
@@ -33,7 +33,7 @@ pub struct ReproduceOptions {
 
 impl ReproduceOptions {
     /// The reference planner an experiment on `scenario` runs, if any.
-    pub fn reference_for(&self, scenario: &tidepath::scenario::Scenario) -> Option<String> {
+    pub fn reference_for(&self, scenario: &tidepath_io::scenario::Scenario) -> Option<String> {
         match self.reference.as_deref() {
             None => Some(super::compare::default_reference(scenario).to_string()),
             Some("none") => None,

@@ -7,7 +7,7 @@ use super::{ClaimVerdict, ExperimentOutcome, Paper, ReproduceOptions};
 use crate::output;
 use crate::table::num;
 use tidepath::error::Result;
-use tidepath::io::Outputs;
+use tidepath_io::Outputs;
 
 /// One cell of a paper's table: what the paper reports for a planner on a problem.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -211,7 +211,7 @@ mod tests {
     #[test]
     fn scenario_experiments_report_the_gap_to_their_reference() {
         use crate::compare::{compare_scenario, RunBudget};
-        let scenario = tidepath::scenario::load("headland").unwrap();
+        let scenario = tidepath_io::scenario::load("headland").unwrap();
         let opts = ReproduceOptions { runs: 2, master_seed: 3, jobs: 1, reference: None, stop: None };
         assert_eq!(opts.reference_for(&scenario).as_deref(), Some("visibility"));
         let none = ReproduceOptions { reference: Some("none".into()), ..opts.clone() };

@@ -107,12 +107,12 @@ fn color_index(order: &[&str], planner: &str) -> usize {
 
 /// Writes [`render_convergence_figure`] to `out` atomically.
 pub fn write_convergence_figure(title: &str, problems: &[ProblemRuns], out: &Path) -> Result<()> {
-    tidepath::io::write_atomic(out, render_convergence_figure(title, problems)?.as_bytes())
+    tidepath_io::write_atomic(out, render_convergence_figure(title, problems)?.as_bytes())
 }
 
 /// Writes [`render_boxplot_figure`] to `out` atomically.
 pub fn write_boxplot_figure(title: &str, problems: &[ProblemRuns], out: &Path) -> Result<()> {
-    tidepath::io::write_atomic(out, render_boxplot_figure(title, problems)?.as_bytes())
+    tidepath_io::write_atomic(out, render_boxplot_figure(title, problems)?.as_bytes())
 }
 
 /// Writes [`render_paths_figure`] to `out` atomically.
@@ -125,5 +125,5 @@ pub fn write_paths_figure(
     paths: &[PlotPath],
     out: &Path,
 ) -> Result<()> {
-    tidepath::io::write_atomic(out, render_paths_figure(title, world, start, goal, time, paths)?.as_bytes())
+    tidepath_io::write_atomic(out, render_paths_figure(title, world, start, goal, time, paths)?.as_bytes())
 }

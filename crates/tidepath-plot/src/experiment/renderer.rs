@@ -5,9 +5,9 @@ use super::{render_boxplot_figure, render_convergence_figure, render_paths_figur
 use crate::PlotPath;
 use tidepath::error::Result;
 use tidepath::geom::Vec3;
-use tidepath::scenario::Scenario;
 use tidepath_experiments::compare::Comparison;
 use tidepath_experiments::output::FigureRenderer;
+use tidepath_io::scenario::Scenario;
 
 /// convergence.svg and boxplot.svg, plus paths.svg (the best path of each planner over the
 /// map) when the problem is a scenario.

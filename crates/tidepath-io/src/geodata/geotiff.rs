@@ -1,0 +1,204 @@
+//! GeoTIFF bathymetry (GEBCO and ETOPO ship it) through the `tiff` crate and the GeoTIFF
+//! tags: `ModelPixelScale` and `ModelTiepoint` place the raster, the GeoKey directory says
+//! the CRS and whether pixels are areas or points, GDAL's `GDAL_NODATA` tag marks no data.
+//!
+//! * Only longitude/latitude rasters on WGS84 (EPSG:4326) are read; a projected CRS or
+//!   another datum is refused with its EPSG code named.
+//! * Pixel-is-area (the default): the tie point is a pixel's outer corner, values belong to
+//!   pixel centres. Pixel-is-point: the tie point is the first pixel's centre.
+//! * Only the strips or tiles overlapping the requested box are decoded, so memory follows
+//!   the box.
+
+use std::io::{Cursor, Read, Seek};
+
+use tiff::decoder::{Decoder, DecodingResult};
+use tiff::tags::Tag;
+
+use super::esri_ascii::{inside_lon, reorder_by_lon, unwrap_lon};
+use super::{DataFile, GeoBox, GeoGrid};
+use tidepath::error::{Error, Result};
+
+/// Most values one read may return (as in the NetCDF reader).
+pub const MAX_VALUES: u64 = 1 << 28;
+
+const MODEL_TYPE: u16 = 1024;
+const RASTER_TYPE: u16 = 1025;
+const GEOGRAPHIC_TYPE: u16 = 2048;
+const PROJECTED_TYPE: u16 = 3072;
+const WGS84: u16 = 4326;
+
+/// Reads `file` inside `subset`, every `decimate`-th pixel.
+pub fn read(file: &DataFile, subset: Option<&GeoBox>, decimate: usize) -> Result<GeoGrid> {
+    let what = file.display();
+    match file {
+        DataFile::Path(p) => {
+            crate::input::regular_file(p, &what)?;
+            let f = std::fs::File::open(p).map_err(|e| Error::io(p, e))?;
+            read_from(std::io::BufReader::new(f), &what, subset, decimate)
+        }
+        DataFile::Embedded { bytes, .. } => read_from(Cursor::new(*bytes), &what, subset, decimate),
+    }
+}
+
+fn tiff_err(what: &str) -> impl Fn(tiff::TiffError) -> Error + '_ {
+    move |e| Error::input(what, format!("not a readable GeoTIFF: {e}"))
+}
+
+/// [`read`] from any seekable reader; `what` names the source in errors.
+pub fn read_from<R: Read + Seek>(r: R, what: &str, subset: Option<&GeoBox>, decimate: usize) -> Result<GeoGrid> {
+    let err = tiff_err(what);
+    let decimate = decimate.max(1);
+    let mut dec = Decoder::new(r).map_err(&err)?;
+    let (w, h) = dec.dimensions().map_err(&err)?;
+    let (w, h) = (w as usize, h as usize);
+    if w < 2 || h < 2 {
+        return Err(Error::input(what, format!("{w} x {h} pixels: needs at least 2 x 2")));
+    }
+    match dec.colortype().map_err(&err)? {
+        tiff::ColorType::Gray(_) => {}
+        other => return Err(Error::input(what, format!("{other:?} raster: a bathymetry GeoTIFF has one band"))),
+    }
+    let scale = dec
+        .find_tag(Tag::ModelPixelScaleTag)
+        .map_err(&err)?
+        .ok_or_else(|| {
+            Error::input(what, "no ModelPixelScale tag: not georeferenced (or rotated, which is not supported)")
+        })?
+        .into_f64_vec()
+        .map_err(&err)?;
+    let tie = dec
+        .find_tag(Tag::ModelTiepointTag)
+        .map_err(&err)?
+        .ok_or_else(|| Error::input(what, "no ModelTiepoint tag: not georeferenced"))?
+        .into_f64_vec()
+        .map_err(&err)?;
+    if scale.len() < 2
+        || tie.len() < 6
+        || !(scale[0] > 0.0 && scale[1] > 0.0)
+        || tie.iter().take(6).any(|v| !v.is_finite())
+    {
+        return Err(Error::input(what, format!("bad georeferencing: pixel scale {scale:?}, tie point {tie:?}")));
+    }
+    let keys = match dec.find_tag(Tag::GeoKeyDirectoryTag).map_err(&err)? {
+        Some(v) => v.into_u16_vec().map_err(&err)?,
+        None => Vec::new(),
+    };
+    let key =
+        |id: u16| -> Option<u16> { keys.get(4..)?.chunks_exact(4).find(|k| k[0] == id && k[1] == 0).map(|k| k[3]) };
+    if let Some(code) = key(PROJECTED_TYPE) {
+        return Err(Error::input(
+            what,
+            format!("EPSG:{code} is a projected CRS; tidepath reads GeoTIFF bathymetry in longitude/latitude (EPSG:4326): reproject it, e.g. gdalwarp -t_srs EPSG:4326"),
+        ));
+    }
+    if key(MODEL_TYPE) == Some(1) {
+        return Err(Error::input(
+            what,
+            "a projected raster (GTModelType 1); tidepath reads longitude/latitude (EPSG:4326)",
+        ));
+    }
+    match key(GEOGRAPHIC_TYPE) {
+        Some(WGS84) | None => {}
+        Some(code) => {
+            return Err(Error::input(
+                what,
+                format!("EPSG:{code} is not WGS84; tidepath reads EPSG:4326 (reproject it)"),
+            ))
+        }
+    }
+    let point = key(RASTER_TYPE) == Some(2);
+    let nodata = match dec.find_tag(Tag::GdalNodata).map_err(&err)? {
+        Some(v) => v.into_string().ok().and_then(|s| s.trim().trim_end_matches('\0').parse::<f64>().ok()),
+        None => None,
+    };
+    // Pixel (i, j) centre; j counts rows from the top (north).
+    let half = if point { 0.0 } else { 0.5 };
+    let (i0, j0, x0, y0) = (tie[0], tie[1], tie[3], tie[4]);
+    let lon_of = |i: usize| x0 + (i as f64 + half - i0) * scale[0];
+    let lat_of = |j: usize| y0 - (j as f64 + half - j0) * scale[1];
+    // The pixels inside the box, one beyond each edge.
+    let cols: Vec<usize> = (0..w).filter(|&i| inside_lon(subset, lon_of(i))).collect();
+    let rows: Vec<usize> =
+        (0..h).filter(|&j| subset.is_none_or(|b| (b.south..=b.north).contains(&lat_of(j)))).collect();
+    let (Some(&c0), Some(&c1), Some(&r0), Some(&r1)) = (cols.first(), cols.last(), rows.first(), rows.last()) else {
+        return Err(Error::input(what, "no pixel of the file lies inside the requested box"));
+    };
+    if subset.is_some() && cols.len() != c1 - c0 + 1 {
+        return Err(Error::input(
+            what,
+            "a box across this raster's edge meridian is not supported for GeoTIFF; use NetCDF",
+        ));
+    }
+    let grow = subset.is_some() as usize;
+    let (c0, c1) = (c0.saturating_sub(grow), (c1 + grow).min(w - 1));
+    let (r0, r1) = (r0.saturating_sub(grow), (r1 + grow).min(h - 1));
+    let keep_c: Vec<usize> = (c0..=c1).step_by(decimate).collect();
+    let keep_r: Vec<usize> = (r0..=r1).step_by(decimate).collect();
+    let total = keep_c.len() as u64 * keep_r.len() as u64;
+    if total > MAX_VALUES {
+        return Err(Error::input(
+            what,
+            format!("the box holds {total} values, more than the limit of {MAX_VALUES}: use a smaller box or decimate"),
+        ));
+    }
+    let (nx, ny) = (keep_c.len(), keep_r.len());
+    let mut values = vec![f64::NAN; nx * ny];
+    // Decode only the chunks (strips or tiles) overlapping the kept rows and columns.
+    let (cw, ch) = dec.chunk_dimensions();
+    let (cw, ch) = (cw as usize, ch as usize);
+    if cw == 0 || ch == 0 {
+        return Err(Error::input(what, "zero-sized strips or tiles"));
+    }
+    let across = w.div_ceil(cw);
+    for ty in r0 / ch..=r1 / ch {
+        for tx in c0 / cw..=c1 / cw {
+            let index = (ty * across + tx) as u32;
+            let data = dec.read_chunk(index).map_err(&err)?;
+            let data_w = dec.chunk_data_dimensions(index).0 as usize;
+            let sample = |k: usize| -> f64 {
+                match &data {
+                    DecodingResult::U8(v) => v[k] as f64,
+                    DecodingResult::U16(v) => v[k] as f64,
+                    DecodingResult::U32(v) => v[k] as f64,
+                    DecodingResult::U64(v) => v[k] as f64,
+                    DecodingResult::I8(v) => v[k] as f64,
+                    DecodingResult::I16(v) => v[k] as f64,
+                    DecodingResult::I32(v) => v[k] as f64,
+                    DecodingResult::I64(v) => v[k] as f64,
+                    DecodingResult::F32(v) => v[k] as f64,
+                    DecodingResult::F64(v) => v[k],
+                    _ => f64::NAN,
+                }
+            };
+            let len = match &data {
+                DecodingResult::U8(v) => v.len(),
+                DecodingResult::U16(v) => v.len(),
+                DecodingResult::U32(v) => v.len(),
+                DecodingResult::U64(v) => v.len(),
+                DecodingResult::I8(v) => v.len(),
+                DecodingResult::I16(v) => v.len(),
+                DecodingResult::I32(v) => v.len(),
+                DecodingResult::I64(v) => v.len(),
+                DecodingResult::F32(v) => v.len(),
+                DecodingResult::F64(v) => v.len(),
+                _ => return Err(Error::input(what, "unsupported sample format")),
+            };
+            for (out_j, &j) in keep_r.iter().enumerate().filter(|(_, &j)| j / ch == ty) {
+                for (out_i, &i) in keep_c.iter().enumerate().filter(|(_, &i)| i / cw == tx) {
+                    let k = (j - ty * ch) * data_w + (i - tx * cw);
+                    if k >= len {
+                        return Err(Error::input(what, format!("chunk {index} is shorter than its tile")));
+                    }
+                    let v = sample(k);
+                    // Rows come north first: flip to south first.
+                    values[(ny - 1 - out_j) * nx + out_i] =
+                        if nodata.is_some_and(|nd| v == nd) || !v.is_finite() { f64::NAN } else { v };
+                }
+            }
+        }
+    }
+    let mut lon: Vec<f64> = keep_c.iter().map(|&i| lon_of(i)).collect();
+    unwrap_lon(&mut lon, subset);
+    let lat: Vec<f64> = keep_r.iter().rev().map(|&j| lat_of(j)).collect();
+    reorder_by_lon(lon, lat, values, what)
+}

@@ -1,0 +1,22 @@
+//! Scenarios and files for tidepath, above the planning core and below the command line:
+//!
+//! * [`scenario`]: scenario TOML files and the built-in scenarios, geographic scenarios with
+//!   their data files, and the `plan` and `eval` entry points every front end shares;
+//! * [`geodata`]: bathymetry (NetCDF, GeoTIFF, ESRI ASCII) and current forecasts (NetCDF),
+//!   read only inside the box a scenario needs;
+//! * [`plan_json`]: the plan file `plan --out` writes and `eval` and `plan --init` read;
+//! * [`export`]: GIS exports (GeoJSON, CSV, KML, GPX);
+//! * [`input`], [`output`]: input files read defensively, output files written all or none.
+//!
+//! The core (`tidepath`) carries no file-format dependency: every reader and writer of a file
+//! format lives here.
+
+pub mod export;
+pub mod geodata;
+pub mod input;
+pub mod output;
+pub mod plan_json;
+pub mod scenario;
+
+pub use output::{write_atomic, OutputId, Outputs};
+pub use plan_json::{MissionReport, PlanAbout, PlanFile, PlanReport, PLAN_FORMAT_VERSION};

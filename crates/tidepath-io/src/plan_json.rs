@@ -1,0 +1,438 @@
+//! The plan JSON written by `tidepath plan --out` and read by `tidepath eval` and
+//! `plan --init`. Field meanings are documented in README.md ("Plan JSON"); keep the two in
+//! step. The format is versioned: version 2 holds one timed path per mission and a status;
+//! files written by version 1 (one path at the top level) still load.
+
+use serde::{Deserialize, Serialize};
+
+use tidepath::error::{Error, Result};
+use tidepath::geom::Vec3;
+use tidepath::path::{Metrics, Violation};
+use tidepath::planner::{MissionPlan, Plan, Status};
+use tidepath::termination::StopReason;
+
+/// The version this build writes. Version 3 adds each mission's own status, reason and
+/// distance left to the goal, and the search's checks and graph size; files of versions 1 and
+/// 2 still load.
+pub const PLAN_FORMAT_VERSION: u32 = 3;
+
+/// Most points a plan file's path may hold: far beyond any planner's output, small enough to
+/// evaluate in well under a second.
+pub const MAX_PLAN_POINTS: usize = 100_000;
+
+/// What the plan was made from: everything in the JSON that is not in [`Plan`].
+#[derive(Clone, Debug, Default)]
+pub struct PlanAbout {
+    pub seed: u64,
+    pub scenario: String,
+    pub scenario_source: String,
+    pub cost_model: String,
+    pub travel_time_model: String,
+    pub time_limit_s: Option<f64>,
+    /// The time limit was the default cap (nothing else set one).
+    pub default_time_cap: bool,
+    /// A warm start was given and the planner uses warm starts.
+    pub warm_start: bool,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MissionReport {
+    pub name: String,
+    /// The path, start and goal included, [x, y, z] in metres.
+    pub waypoints: Vec<[f64; 3]>,
+    /// The path after the smoother, when one ran; every field below then describes it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub smoothed: Option<Vec<[f64; 3]>>,
+    /// Cost of `waypoints` before smoothing, when a smoother ran.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub raw_cost: Option<f64>,
+    /// Arrival time (s, scenario clock) at each point of the final path.
+    pub times: Vec<f64>,
+    /// `null` when nothing was planned (the status says why).
+    pub cost: Option<f64>,
+    /// The weighted terms of the cost model, in the model's order; they sum to `cost`.
+    pub cost_terms: serde_json::Map<String, serde_json::Value>,
+    pub feasible: bool,
+    pub violations: Vec<Violation>,
+    pub metrics: Option<Metrics>,
+    /// This mission's status and why (version 3; a plan's status is the worst of these).
+    #[serde(default = "unknown_status")]
+    pub status: Status,
+    #[serde(default)]
+    pub reason: String,
+    /// The distance (m) from the path's last point to the goal when it stops short.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goal_distance_m: Option<f64>,
+}
+
+fn unknown_status() -> Status {
+    Status::Infeasible
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PlanReport {
+    /// Always "tidepath-plan".
+    pub format: String,
+    pub version: u32,
+    pub tidepath_version: String,
+    pub planner: String,
+    pub seed: u64,
+    pub scenario: String,
+    pub scenario_source: String,
+    pub cost_model: String,
+    /// "crab" or "vector-sum": which travel-time model the cost and metrics used.
+    pub travel_time_model: String,
+    pub status: Status,
+    /// One line: why the status is what it is.
+    pub reason: String,
+    /// True for status exact or feasible.
+    pub feasible: bool,
+    /// Sum of the missions' costs (`null` when nothing was planned).
+    pub cost: Option<f64>,
+    pub missions: Vec<MissionReport>,
+    pub evaluations: u64,
+    pub iterations: u64,
+    pub expansions: u64,
+    pub samples: u64,
+    /// Validator calls made for the planner (OMPL's valid states and motions) and the size of
+    /// the graph a graph planner built; 0 where not counted.
+    #[serde(default)]
+    pub state_checks: u64,
+    #[serde(default)]
+    pub motion_checks: u64,
+    #[serde(default)]
+    pub graph_nodes: u64,
+    #[serde(default)]
+    pub graph_edges: u64,
+    /// Whether the run started from a warm start (`--init`) and the planner used it.
+    #[serde(default)]
+    pub warm_start: bool,
+    pub stop_reason: StopReason,
+    pub elapsed_s: f64,
+    /// The wall-time limit of the run (s), and whether it was the default cap.
+    pub time_limit_s: Option<f64>,
+    pub default_time_cap: bool,
+    /// Best cost after initialisation and after each iteration (null where still infinite).
+    pub history: Vec<Option<f64>>,
+    /// For geographic scenarios: the frame the metres are in, the clock's UTC zero, and each
+    /// mission's path in longitude/latitude.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub geographic: Option<GeoReport>,
+}
+
+/// Where a geographic plan's metres and seconds are on the Earth and the calendar.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct GeoReport {
+    /// "azimuthal-equidistant-wgs84" (`tidepath::geo`).
+    pub projection: String,
+    pub origin_lon: f64,
+    pub origin_lat: f64,
+    /// ISO 8601 UTC of the scenario clock's zero, when the scenario has one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub epoch: Option<String>,
+    /// Per mission, the final path as [longitude, latitude, depth_m] (depth positive down).
+    pub paths: Vec<Vec<[f64; 3]>>,
+}
+
+fn finite(v: f64) -> Option<f64> {
+    v.is_finite().then_some(v)
+}
+
+fn points(p: &[Vec3]) -> Vec<[f64; 3]> {
+    p.iter().map(|q| q.to_array()).collect()
+}
+
+impl MissionReport {
+    fn new(m: &MissionPlan) -> Self {
+        Self {
+            name: m.name.clone(),
+            waypoints: points(&m.waypoints),
+            smoothed: m.smoothed.as_deref().map(points),
+            raw_cost: m.raw_cost,
+            times: m.times.clone(),
+            cost: finite(m.cost),
+            cost_terms: m.terms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect(),
+            feasible: m.feasible,
+            violations: m.violations.clone(),
+            metrics: m.metrics,
+            status: m.status,
+            reason: m.reason.clone(),
+            goal_distance_m: m.goal_distance_m,
+        }
+    }
+
+    /// The final path: `smoothed` when present, else `waypoints`.
+    pub fn points(&self) -> Vec<Vec3> {
+        self.smoothed.as_ref().unwrap_or(&self.waypoints).iter().map(|p| Vec3::from_array(*p)).collect()
+    }
+}
+
+impl PlanReport {
+    pub fn new(plan: &Plan, about: PlanAbout) -> Self {
+        let s = &plan.stats;
+        Self {
+            format: "tidepath-plan".into(),
+            version: PLAN_FORMAT_VERSION,
+            tidepath_version: env!("CARGO_PKG_VERSION").to_string(),
+            planner: plan.planner.clone(),
+            seed: about.seed,
+            scenario: about.scenario,
+            scenario_source: about.scenario_source,
+            cost_model: about.cost_model,
+            travel_time_model: about.travel_time_model,
+            status: plan.status,
+            reason: plan.reason.clone(),
+            feasible: plan.status.is_success(),
+            cost: finite(plan.cost),
+            missions: plan.missions.iter().map(MissionReport::new).collect(),
+            evaluations: s.evaluations,
+            iterations: s.iterations,
+            expansions: s.expansions,
+            samples: s.samples,
+            state_checks: s.state_checks,
+            motion_checks: s.motion_checks,
+            graph_nodes: s.graph_nodes,
+            graph_edges: s.graph_edges,
+            warm_start: about.warm_start,
+            stop_reason: s.stop_reason,
+            elapsed_s: s.elapsed.as_secs_f64(),
+            time_limit_s: about.time_limit_s,
+            default_time_cap: about.default_time_cap,
+            history: s.history.iter().map(|h| finite(*h)).collect(),
+            geographic: None,
+        }
+    }
+
+    /// Adds the geographic frame and the paths in longitude/latitude.
+    pub fn with_frame(
+        mut self,
+        frame: Option<&tidepath::geo::GeoFrame>,
+        epoch: Option<chrono::DateTime<chrono::Utc>>,
+    ) -> Self {
+        if let Some(f) = frame {
+            let paths = self
+                .missions
+                .iter()
+                .map(|m| {
+                    m.points()
+                        .iter()
+                        .map(|p| {
+                            let (lon, lat) = f.inverse(p.x, p.y);
+                            [(lon * 1e7).round() / 1e7, (lat * 1e7).round() / 1e7, -p.z + 0.0]
+                        })
+                        .collect()
+                })
+                .collect();
+            self.geographic = Some(GeoReport {
+                projection: "azimuthal-equidistant-wgs84".into(),
+                origin_lon: f.lon0,
+                origin_lat: f.lat0,
+                epoch: epoch.map(|e| e.to_rfc3339_opts(chrono::SecondsFormat::Secs, true)),
+                paths,
+            });
+        }
+        self
+    }
+
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("plan report serialises") + "\n"
+    }
+
+    /// The cost as a number (+inf when nothing was planned).
+    pub fn cost_value(&self) -> f64 {
+        self.cost.unwrap_or(f64::INFINITY)
+    }
+
+    /// The final path of each mission.
+    pub fn paths(&self) -> Vec<Vec<Vec3>> {
+        self.missions.iter().map(MissionReport::points).collect()
+    }
+
+    /// Summed length of the missions' final paths (m); `None` when nothing was planned.
+    pub fn length_m(&self) -> Option<f64> {
+        self.missions.iter().map(|m| m.metrics.map(|x| x.length_m)).sum()
+    }
+
+    /// Longest travel time of the missions (s): when the whole fleet has arrived.
+    pub fn travel_time_s(&self) -> Option<f64> {
+        self.missions.iter().map(|m| m.metrics.map(|x| x.travel_time_s)).try_fold(0.0f64, |a, t| t.map(|t| a.max(t)))
+    }
+}
+
+/// One mission's path in a plan file, in either format version.
+#[derive(Clone, Debug, Deserialize)]
+struct PathEntry {
+    #[serde(default)]
+    name: Option<String>,
+    waypoints: Vec<[f64; 3]>,
+    #[serde(default)]
+    smoothed: Option<Vec<[f64; 3]>>,
+    #[serde(default)]
+    cost: Option<f64>,
+}
+
+/// The part of a plan file `eval` and `plan --init` need; other fields are optional so
+/// hand-written files work. Version 2 files list `missions`; version 1 files (and hand-written
+/// ones) may give `waypoints` (and `smoothed`, `cost`) at the top level instead.
+#[derive(Clone, Debug, Deserialize)]
+struct RawPlanFile {
+    #[serde(default)]
+    version: Option<u32>,
+    #[serde(default)]
+    missions: Option<Vec<PathEntry>>,
+    #[serde(default)]
+    waypoints: Option<Vec<[f64; 3]>>,
+    #[serde(default)]
+    smoothed: Option<Vec<[f64; 3]>>,
+    #[serde(default)]
+    cost: Option<f64>,
+    #[serde(default)]
+    planner: Option<String>,
+    #[serde(default)]
+    scenario: Option<String>,
+}
+
+/// A plan file as read: one final path per mission.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlanFile {
+    /// (mission name if given, final path).
+    pub paths: Vec<(Option<String>, Vec<Vec3>)>,
+    /// The recorded total cost, if any.
+    pub cost: Option<f64>,
+    pub planner: Option<String>,
+    pub scenario: Option<String>,
+    /// 1 for files without a version field.
+    pub version: u32,
+}
+
+impl PlanFile {
+    pub fn read(path: &std::path::Path) -> Result<Self> {
+        let shown = path.display().to_string();
+        let text = super::input::read_text(path, &shown, super::input::MAX_PLAN_BYTES)?;
+        Self::parse(&text, &shown)
+    }
+
+    pub fn parse(text: &str, source: &str) -> Result<Self> {
+        let de = &mut serde_json::Deserializer::from_str(text);
+        let raw: RawPlanFile = serde_path_to_error::deserialize(&mut *de).map_err(|e| {
+            let path = e.path().to_string();
+            let inner = e.into_inner();
+            let field = if path == "." { source.to_string() } else { format!("{source}: {path}") };
+            Error::input(
+                field,
+                format!("{} (line {}, column {})", strip_position(&inner.to_string()), inner.line(), inner.column()),
+            )
+        })?;
+        // Anything after the JSON object is a damaged or concatenated file, not a plan.
+        de.end().map_err(|e| {
+            Error::input(
+                source,
+                format!("unexpected text after the plan's JSON object (line {}, column {})", e.line(), e.column()),
+            )
+        })?;
+        let version = raw.version.unwrap_or(1);
+        if version == 0 {
+            return Err(Error::input(format!("{source}: version"), "must be 1 or more, got 0"));
+        }
+        if version > PLAN_FORMAT_VERSION {
+            return Err(Error::input(
+                format!("{source}: version"),
+                format!("{version} is newer than this tidepath reads ({PLAN_FORMAT_VERSION})"),
+            ));
+        }
+        let entries: Vec<(String, PathEntry)> = match (raw.missions, raw.waypoints) {
+            (Some(_), Some(_)) => {
+                return Err(Error::input(source, "give either `missions` or top-level `waypoints`, not both"));
+            }
+            (Some(m), None) => m.into_iter().enumerate().map(|(i, e)| (format!("missions[{i}]."), e)).collect(),
+            (None, Some(w)) => {
+                vec![(String::new(), PathEntry { name: None, waypoints: w, smoothed: raw.smoothed, cost: raw.cost })]
+            }
+            (None, None) => return Err(Error::input(source, "no path: expected `missions` or `waypoints`")),
+        };
+        if entries.is_empty() {
+            return Err(Error::input(format!("{source}: missions"), "is empty"));
+        }
+        let mut paths = Vec::with_capacity(entries.len());
+        for (prefix, e) in entries {
+            let lists = [("waypoints", Some(&e.waypoints)), ("smoothed", e.smoothed.as_ref())];
+            for (name, list) in lists.into_iter().filter_map(|(n, l)| l.map(|l| (n, l))) {
+                if list.len() < 2 {
+                    return Err(Error::input(
+                        format!("{source}: {prefix}{name}"),
+                        format!("a path needs at least 2 points, got {}", list.len()),
+                    ));
+                }
+                if list.len() > MAX_PLAN_POINTS {
+                    return Err(Error::input(
+                        format!("{source}: {prefix}{name}"),
+                        format!("at most {MAX_PLAN_POINTS} points, got {}", list.len()),
+                    ));
+                }
+                for (i, p) in list.iter().enumerate() {
+                    if p.iter().any(|v| !v.is_finite()) {
+                        return Err(Error::input(
+                            format!("{source}: {prefix}{name}[{i}]"),
+                            format!("{p:?}: numbers must be finite"),
+                        ));
+                    }
+                }
+            }
+            let _ = e.cost;
+            let pts = e.smoothed.as_ref().unwrap_or(&e.waypoints).iter().map(|p| Vec3::from_array(*p)).collect();
+            paths.push((e.name, pts));
+        }
+        Ok(Self { paths, cost: raw.cost, planner: raw.planner, scenario: raw.scenario, version })
+    }
+
+    /// The final path of each mission.
+    pub fn mission_paths(&self) -> Vec<Vec<Vec3>> {
+        self.paths.iter().map(|(_, p)| p.clone()).collect()
+    }
+}
+
+/// serde_json appends " at line L column C"; we print the position once, our way.
+fn strip_position(msg: &str) -> &str {
+    msg.rfind(" at line ").map_or(msg, |i| &msg[..i])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plan_file_errors_name_the_field() {
+        let e = PlanFile::parse(r#"{"waypoints": [[0,0,0],[1,"a",0]]}"#, "p.json").unwrap_err().to_string();
+        assert!(e.starts_with("p.json: waypoints[1][1]: invalid type"), "{e}");
+        let e = PlanFile::parse(r#"{"waypoints": [[0,0,0]]}"#, "p.json").unwrap_err().to_string();
+        assert!(e.contains("at least 2 points"), "{e}");
+        let e = PlanFile::parse("{not json", "p.json").unwrap_err().to_string();
+        assert!(e.starts_with("p.json"), "{e}");
+        let e = PlanFile::parse(r#"{"version": 2, "missions": [{"waypoints": [[0,0,0],[1,0,NaN]]}]}"#, "p.json");
+        assert!(e.is_err());
+        let e = PlanFile::parse(r#"{"waypoints": [[0,0,0],[1,0,0]]} {"x": 1}"#, "p.json").unwrap_err().to_string();
+        assert!(e.starts_with("p.json: unexpected text after the plan's JSON object"), "{e}");
+        assert!(PlanFile::parse("{\"waypoints\": [[0,0,0],[1,0,0]]}\n  \n", "p.json").is_ok());
+        let e = PlanFile::parse(r#"{"version": 0, "waypoints": [[0,0,0],[1,0,0]]}"#, "p.json").unwrap_err().to_string();
+        assert_eq!(e, "p.json: version: must be 1 or more, got 0");
+        let e = PlanFile::parse(r#"{"version": 9, "missions": []}"#, "p.json").unwrap_err().to_string();
+        assert!(e.contains("newer"), "{e}");
+    }
+
+    #[test]
+    fn version_one_and_two_files_both_load() {
+        let v1 =
+            PlanFile::parse(r#"{"waypoints": [[0,0,0],[1,0,0]], "smoothed": [[0,0,0],[2,0,0]], "cost": 1.5}"#, "a")
+                .unwrap();
+        assert_eq!(v1.version, 1);
+        assert_eq!(v1.mission_paths(), vec![vec![Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0)]]);
+        let v2 = PlanFile::parse(
+            r#"{"version": 2, "missions": [{"name": "a", "waypoints": [[0,0,0],[1,0,0]]},
+                {"name": "b", "waypoints": [[0,1,0],[1,1,0]]}]}"#,
+            "b",
+        )
+        .unwrap();
+        assert_eq!(v2.paths.len(), 2);
+        assert_eq!(v2.paths[1].0.as_deref(), Some("b"));
+    }
+}

@@ -1,0 +1,84 @@
+//! Scenarios embedded in the binary, so a newcomer can plan without writing a file. One table
+//! entry each: the id, a line, the source of its data, and the TOML text.
+
+use tidepath::registry::{no_params, Entry, Registry};
+
+pub const BUILTIN: &[Entry<&str>] = &[
+    Entry {
+        id: "demo",
+        description:
+            "3-D AUV transit over seamounts, past a moving sphere, a wreck and an exclusion zone, through three eddies",
+        citation: "tidepath (synthetic)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/demo.toml"),
+    },
+    Entry {
+        id: "salish",
+        description: "2-D surface transit up the Strait of Juan de Fuca on a real elevation grid, with a flood tide",
+        citation: "elevation: matplotlib's topobathy sample (Strait of Juan de Fuca)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/salish.toml"),
+    },
+    Entry {
+        id: "salish-strait",
+        description:
+            "3-D AUV transit from west of Cape Flattery to Haro Strait on the real seabed, at least 20 m above it",
+        citation: "elevation: matplotlib's topobathy sample (Strait of Juan de Fuca)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/salish-strait.toml"),
+    },
+    Entry {
+        id: "salish-forecast",
+        description:
+            "2-D surface transit up the Strait of Juan de Fuca through a tidal current forecast read from NetCDF",
+        citation:
+            "elevation: matplotlib's topobathy sample; currents: synthetic M2 tide (scripts/make_salish_forecast.py)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/salish-forecast.toml"),
+    },
+    Entry {
+        id: "headland",
+        description: "2-D surface transit to a goal in a bay that opens away from the start: the route must turn back",
+        citation: "tidepath (synthetic)",
+        params: &[],
+        defaults: no_params,
+        build: include_str!("../../scenarios/headland.toml"),
+    },
+];
+
+pub fn registry() -> Registry<&'static str> {
+    Registry::new("built-in scenario", "SCENARIO", "tidepath scenarios", BUILTIN)
+}
+
+/// The TOML text of built-in scenario `name`.
+pub fn builtin(name: &str) -> Option<&'static str> {
+    BUILTIN.iter().find(|e| e.id == name).map(|e| e.build)
+}
+
+pub fn builtin_names() -> impl Iterator<Item = &'static str> {
+    BUILTIN.iter().map(|e| e.id)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::{PlanRequest, Scenario};
+
+    #[test]
+    fn every_builtin_scenario_loads_and_plans() {
+        for e in BUILTIN {
+            let s = Scenario::from_toml(e.build, &format!("builtin:{}", e.id))
+                .unwrap_or_else(|err| panic!("{}: {err}", e.id));
+            assert!(s.warnings.is_empty(), "{}: {:?}", e.id, s.warnings);
+            let req = PlanRequest { iterations: Some(3), ..PlanRequest::default() };
+            let r = s.plan(&req, &mut |_| {}).unwrap_or_else(|err| panic!("{}: {err}", e.id));
+            let w = &r.missions[0].waypoints;
+            assert!(w.len() >= 2, "{}", e.id);
+            assert_eq!((w[0], w[w.len() - 1]), (s.start.to_array(), s.goal.to_array()), "{}", e.id);
+        }
+    }
+}

@@ -1,0 +1,504 @@
+//! Geographic scenarios: a spec written in longitude/latitude is rewritten into the local
+//! metric frame before the world is built, so everything after loading works in metres.
+//!
+//! * The frame is the azimuthal equidistant projection about the centre of the `bounds` box
+//!   (`tidepath::geo`); the metric domain is the smallest rectangle holding the projected box
+//!   (its edges sampled densely), so it reaches slightly beyond the box's curved edges.
+//! * Mission starts and goals and obstacle centres are projected; an obstacle box's corners
+//!   are projected and the box holding them is used (a conservative approximation).
+//! * A bathymetry file is read inside the longitude/latitude box that covers the metric
+//!   domain, then resampled (bilinear) onto a metric grid at the file's own resolution unless
+//!   `resolution` says otherwise. Nodes without data (fill values, outside the file) are taken
+//!   as land, [`NO_DATA_ELEVATION`], and counted in a warning.
+//! * Other positions (peaks, vortices, current grids, jet regions) stay metres in the local
+//!   frame, whose origin is the box centre.
+
+use std::path::{Path, PathBuf};
+
+use chrono::{DateTime, Utc};
+
+use super::spec::*;
+use crate::geodata::currents::read_currents;
+use crate::geodata::currents::MAX_FORECAST_VALUES;
+use crate::geodata::netcdf::{read_bathymetry, Positive};
+use crate::geodata::{esri_ascii, name_decimate, DataFile, Format, GeoBox, GeoGrid, EMBEDDED};
+use tidepath::error::{Error, Result};
+use tidepath::geo::GeoFrame;
+
+/// Elevation (m) given to nodes without data: land, above the sea surface.
+pub const NO_DATA_ELEVATION: f64 = 10.0;
+
+/// Most nodes of a resampled metric grid: 4 million (a 2000 x 2000 grid). A finer request is
+/// coarsened to fit, with a warning.
+pub const MAX_GRID_NODES: usize = 4_000_000;
+
+/// Finest and coarsest `resolution` (m) of a resampled grid: a centimetre is finer than any
+/// survey; beyond 1,000 km there is nothing left to resample.
+pub const MIN_RESOLUTION_M: f64 = 0.01;
+pub const MAX_RESOLUTION_M: f64 = 1e6;
+
+/// A spec in metres, with the frame and clock it came from.
+pub(crate) struct Localised {
+    pub spec: ScenarioSpec,
+    pub frame: Option<GeoFrame>,
+    pub epoch: Option<DateTime<Utc>>,
+    pub warnings: Vec<String>,
+}
+
+/// Rewrites `spec` into metres when its frame is geographic, resolves ISO departures against
+/// the epoch; `source` is the scenario's file path or `builtin:NAME` (for data file paths).
+pub(crate) fn localise(spec: &ScenarioSpec, source: &str) -> Result<Localised> {
+    let mut out = spec.clone();
+    let mut warnings = Vec::new();
+    let epoch = resolve_clock(&mut out)?;
+    let frame = match spec.world.frame {
+        FrameKind::Local => {
+            if matches!(spec.world.terrain, TerrainSpec::File { .. }) {
+                return Err(Error::input(
+                    "world.terrain.kind",
+                    "\"file\" reads longitude/latitude data: set world.frame = \"geographic\"",
+                ));
+            }
+            if matches!(spec.world.current, CurrentSpec::File { .. }) {
+                return Err(Error::input(
+                    "world.current.kind",
+                    "\"file\" reads longitude/latitude data: set world.frame = \"geographic\"",
+                ));
+            }
+            None
+        }
+        FrameKind::Geographic => Some(project(&mut out, source, &mut warnings)?),
+    };
+    let mut epoch = epoch;
+    if let (Some(f), CurrentSpec::File { .. }) = (&frame, &spec.world.current) {
+        epoch = Some(load_currents(&mut out, f, source, epoch, &mut warnings)?);
+    }
+    Ok(Localised { spec: out, frame, epoch, warnings })
+}
+
+fn parse_instant(field: &str, text: &str) -> Result<DateTime<Utc>> {
+    let t = text.trim();
+    DateTime::parse_from_rfc3339(t)
+        .map(|d| d.with_timezone(&Utc))
+        .or_else(|_| {
+            // Also a date alone, or a time without a zone, taken as UTC.
+            chrono::NaiveDateTime::parse_from_str(t, "%Y-%m-%dT%H:%M:%S")
+                .or_else(|_| chrono::NaiveDate::parse_from_str(t, "%Y-%m-%d").map(|d| d.and_hms_opt(0, 0, 0).unwrap()))
+                .map(|n| n.and_utc())
+        })
+        .map_err(|_| {
+            Error::input(field, format!("`{text}` is not an ISO 8601 UTC instant (e.g. 2025-11-12T06:00:00Z)"))
+        })
+        .and_then(|t| {
+            use chrono::Datelike;
+            if (MIN_YEAR..=MAX_YEAR).contains(&t.year()) {
+                Ok(t)
+            } else {
+                Err(Error::input(field, format!("`{text}` is outside the years {MIN_YEAR} to {MAX_YEAR}")))
+            }
+        })
+}
+
+/// The years an epoch or departure may fall in: wide enough for any hindcast or forecast, and
+/// far enough inside the calendar's range that every arrival time can still be written.
+pub const MIN_YEAR: i32 = 1800;
+pub const MAX_YEAR: i32 = 2300;
+
+/// The scenario clock: `world.epoch`, or the earliest ISO departure; ISO departures become
+/// seconds after it.
+fn resolve_clock(spec: &mut ScenarioSpec) -> Result<Option<DateTime<Utc>>> {
+    let mut isos: Vec<(String, DateTime<Utc>)> = Vec::new();
+    if let Some(m) = &spec.mission {
+        if let Some(d) = &m.departure {
+            isos.push(("mission.departure".into(), parse_instant("mission.departure", d)?));
+        }
+    }
+    for (i, m) in spec.missions.iter().enumerate() {
+        if let Some(d) = &m.departure {
+            let f = format!("missions[{i}].departure");
+            isos.push((f.clone(), parse_instant(&f, d)?));
+        }
+    }
+    let epoch = match &spec.world.epoch {
+        Some(e) => Some(parse_instant("world.epoch", e)?),
+        None => isos.iter().map(|(_, t)| *t).min(),
+    };
+    let seconds = |t: &DateTime<Utc>| (*t - epoch.unwrap()).num_milliseconds() as f64 / 1e3;
+    if let Some(m) = &mut spec.mission {
+        if m.departure.is_some() {
+            if m.departure_time != 0.0 {
+                return Err(Error::input("mission.departure", "give departure or departure_time, not both"));
+            }
+            m.departure_time = seconds(&isos.remove(0).1);
+        }
+    }
+    for (i, m) in spec.missions.iter_mut().enumerate() {
+        if m.departure.is_some() {
+            if m.departure_time != 0.0 {
+                return Err(Error::input(
+                    format!("missions[{i}].departure"),
+                    "give departure or departure_time, not both",
+                ));
+            }
+            m.departure_time = seconds(&isos.remove(0).1);
+        }
+    }
+    Ok(epoch)
+}
+
+/// Projects every geographic position of `spec` and loads its bathymetry file.
+fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) -> Result<GeoFrame> {
+    let [w, s, z0] = spec.world.bounds.min;
+    let [e, n, z1] = spec.world.bounds.max;
+    let geo_box = GeoBox::new(w, s, e, n, "world.bounds")?;
+    let lon0 = tidepath::geo::normalise_lon(w + geo_box.width() / 2.0);
+    let frame = GeoFrame::new(lon0, (s + n) / 2.0, "world.bounds")?;
+    // The metric rectangle holding the projected box.
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    const EDGE_SAMPLES: usize = 64;
+    for k in 0..=EDGE_SAMPLES {
+        let f = k as f64 / EDGE_SAMPLES as f64;
+        let lon = w + f * geo_box.width();
+        let lat = s + f * (n - s);
+        for (x, y) in [(lon, s), (lon, n), (w, lat), (geo_box.east_unwrapped(), lat)] {
+            let (px, py) = frame.forward(x, y, "world.bounds")?;
+            lo = [lo[0].min(px), lo[1].min(py)];
+            hi = [hi[0].max(px), hi[1].max(py)];
+        }
+    }
+    spec.world.bounds.min = [lo[0], lo[1], z0];
+    spec.world.bounds.max = [hi[0], hi[1], z1];
+    let point = |p: &mut P3, field: &str| -> Result<()> {
+        let (x, y) = frame.forward(p[0], p[1], field)?;
+        *p = [x, y, p[2]];
+        Ok(())
+    };
+    if let Some(m) = &mut spec.mission {
+        point(&mut m.start, "mission.start")?;
+        point(&mut m.goal, "mission.goal")?;
+    }
+    for (i, m) in spec.missions.iter_mut().enumerate() {
+        point(&mut m.start, &format!("missions[{i}].start"))?;
+        point(&mut m.goal, &format!("missions[{i}].goal"))?;
+    }
+    for (i, o) in spec.world.obstacles.iter_mut().enumerate() {
+        if let Some(c) = &mut o.center {
+            if c.len() >= 2 {
+                let (x, y) = frame.forward(c[0], c[1], &format!("world.obstacles[{i}].center"))?;
+                c[0] = x;
+                c[1] = y;
+                // A velocity is given east and north (m/s).
+                if let Some(v) = &mut o.velocity {
+                    let (vx, vy) = east_north_to_frame(&frame, x, y, v[0], v[1]);
+                    *v = [vx, vy, v[2]];
+                }
+            }
+        }
+        if let (Some(a), Some(b)) = (&mut o.min, &mut o.max) {
+            let field = format!("world.obstacles[{i}]");
+            let corners = [(a[0], a[1]), (a[0], b[1]), (b[0], a[1]), (b[0], b[1])];
+            let mut xs = Vec::new();
+            for (lon, lat) in corners {
+                xs.push(frame.forward(lon, lat, &field)?);
+            }
+            a[0] = xs.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+            a[1] = xs.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+            b[0] = xs.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+            b[1] = xs.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+            if let (None, Some(v)) = (&o.center, &mut o.velocity) {
+                let (vx, vy) = east_north_to_frame(&frame, (a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0, v[0], v[1]);
+                *v = [vx, vy, v[2]];
+            }
+        }
+    }
+    if let TerrainSpec::File { path, variable, positive, decimate, resolution } = &spec.world.terrain {
+        let file = data_file(path, source, "world.terrain.path")?;
+        let positive = match positive.as_deref() {
+            None => None,
+            Some("up") => Some(Positive::Up),
+            Some("down") => Some(Positive::Down),
+            Some(other) => {
+                return Err(Error::input(
+                    "world.terrain.positive",
+                    format!("must be \"up\" or \"down\", got \"{other}\""),
+                ))
+            }
+        };
+        let decimate = decimate.unwrap_or(1);
+        if !(1..=10_000).contains(&decimate) {
+            return Err(Error::input("world.terrain.decimate", format!("must be from 1 to 10000, got {decimate}")));
+        }
+        let subset = cover(&frame, lo, hi)?;
+        let grid = match Format::of(&file, "world.terrain.path")? {
+            Format::NetCdf => read_bathymetry(&file, variable.as_deref(), positive, Some(&subset), decimate),
+            Format::EsriAscii => esri_ascii::read(&file, Some(&subset), decimate),
+            Format::GeoTiff => crate::geodata::geotiff::read(&file, Some(&subset), decimate),
+        }
+        .map_err(|e| name_decimate(e, decimate, "world.terrain.decimate", &file.display()))?;
+        spec.world.terrain = resample(&grid, &frame, lo, hi, *resolution, warnings)?;
+    }
+    Ok(frame)
+}
+
+/// The longitude/latitude box holding the metric rectangle `lo`..`hi`, with a margin of 1%.
+fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
+    let (mut west, mut east, mut south, mut north) =
+        (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    const SAMPLES: usize = 64;
+    for k in 0..=SAMPLES {
+        let f = k as f64 / SAMPLES as f64;
+        let x = lo[0] + f * (hi[0] - lo[0]);
+        let y = lo[1] + f * (hi[1] - lo[1]);
+        for (px, py) in [(x, lo[1]), (x, hi[1]), (lo[0], y), (hi[0], y)] {
+            let (lon, lat) = frame.inverse(px, py);
+            // Longitudes relative to the origin, so a box across the antimeridian stays whole.
+            let lon = frame.lon0 + tidepath::geo::normalise_lon(lon - frame.lon0);
+            west = west.min(lon);
+            east = east.max(lon);
+            south = south.min(lat);
+            north = north.max(lat);
+        }
+    }
+    let (mx, my) = (0.01 * (east - west) + 1e-6, 0.01 * (north - south) + 1e-6);
+    GeoBox::new(
+        tidepath::geo::normalise_lon(west - mx),
+        (south - my).max(-90.0),
+        tidepath::geo::normalise_lon(east + mx),
+        (north + my).min(90.0),
+        "world.bounds",
+    )
+}
+
+/// `path` relative to the scenario's folder, or a built-in data file for built-in scenarios.
+fn data_file(path: &str, source: &str, field: &str) -> Result<DataFile> {
+    if let Some(_name) = source.strip_prefix("builtin:") {
+        return EMBEDDED
+            .iter()
+            .find(|(n, _)| *n == path)
+            .map(|(name, bytes)| DataFile::Embedded { name, bytes })
+            .ok_or_else(|| Error::input(field, format!("no built-in data file `{path}`")));
+    }
+    let p = Path::new(path);
+    let full: PathBuf = if p.is_absolute() {
+        p.to_path_buf()
+    } else {
+        Path::new(source).parent().map(|d| d.join(p)).unwrap_or_else(|| p.to_path_buf())
+    };
+    // A copy of a built-in scenario (`tidepath scenario salish > mine.toml`) keeps working
+    // where its data file is not next to it: the built-in copy is used.
+    if !full.exists() {
+        if let Some((name, bytes)) = EMBEDDED.iter().find(|(n, _)| *n == path) {
+            return Ok(DataFile::Embedded { name, bytes });
+        }
+    }
+    Ok(DataFile::Path(full))
+}
+
+/// A regular metric grid over `lo`..`hi` and where each of its nodes lies in degrees: found
+/// once per data file and used for every layer resampled onto it (bathymetry, or each time
+/// step of u and v), since the geodesic computations are the costly part.
+struct MetricGrid {
+    origin: [f64; 2],
+    spacing: [f64; 2],
+    shape: [usize; 2],
+    /// (lon, lat) of each node, row-major.
+    lonlat: Vec<(f64, f64)>,
+}
+
+impl MetricGrid {
+    /// Spacing `resolution`, by default `g`'s own at its middle latitude; coarsened (with a
+    /// warning naming `field`) to stay within `max_nodes` (at most [`MAX_GRID_NODES`]).
+    fn new(
+        g: &GeoGrid,
+        frame: &GeoFrame,
+        (lo, hi): ([f64; 2], [f64; 2]),
+        resolution: Option<f64>,
+        max_nodes: usize,
+        field: &str,
+        warnings: &mut Vec<String>,
+    ) -> Result<Self> {
+        let lat_mid = (g.lat[0] + g.lat[g.ny() - 1]) / 2.0;
+        let native = {
+            let dlon = (g.lon[g.nx() - 1] - g.lon[0]) / (g.nx() - 1) as f64;
+            let dlat = (g.lat[g.ny() - 1] - g.lat[0]) / (g.ny() - 1) as f64;
+            (dlon * 111_320.0 * lat_mid.to_radians().cos()).min(dlat * 110_540.0)
+        };
+        let mut spacing = match resolution {
+            Some(r) if (MIN_RESOLUTION_M..=MAX_RESOLUTION_M).contains(&r) => r,
+            Some(r) => {
+                return Err(Error::input(
+                    field,
+                    format!("must be from {MIN_RESOLUTION_M} to {MAX_RESOLUTION_M} m, got {r:?}"),
+                ))
+            }
+            None => native.max(MIN_RESOLUTION_M),
+        };
+        let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
+        let nodes = |sp: f64| ((w / sp).ceil() as usize + 1, (h / sp).ceil() as usize + 1);
+        let (mut nx, mut ny) = nodes(spacing);
+        let max_nodes = max_nodes.clamp(4, MAX_GRID_NODES);
+        if (nx as f64) * (ny as f64) > max_nodes as f64 {
+            spacing *= ((nx as f64 * ny as f64) / max_nodes as f64).sqrt() * 1.01;
+            (nx, ny) = nodes(spacing);
+            while nx * ny > max_nodes && nx * ny > 4 {
+                spacing *= 1.01;
+                (nx, ny) = nodes(spacing);
+            }
+            warnings.push(format!("{field}: resampled at {spacing:.0} m so the grid stays within {max_nodes} nodes"));
+        }
+        let (dx, dy) = (w / (nx - 1) as f64, h / (ny - 1) as f64);
+        let mut lonlat = Vec::with_capacity(nx * ny);
+        for j in 0..ny {
+            for i in 0..nx {
+                lonlat.push(frame.inverse(lo[0] + i as f64 * dx, lo[1] + j as f64 * dy));
+            }
+        }
+        Ok(Self { origin: lo, spacing: [dx, dy], shape: [nx, ny], lonlat })
+    }
+
+    /// The metric position of node `k`.
+    fn xy(&self, k: usize) -> (f64, f64) {
+        let [nx, _] = self.shape;
+        (self.origin[0] + (k % nx) as f64 * self.spacing[0], self.origin[1] + (k / nx) as f64 * self.spacing[1])
+    }
+
+    /// `g` bilinear at every node, `NaN` where it has no data. `valid_only` leaves out corners
+    /// without data ([`GeoGrid::sample_valid`]) instead of giving up on the node.
+    fn sample(&self, g: &GeoGrid, valid_only: bool) -> Vec<f64> {
+        let lon_first = g.lon[0];
+        self.lonlat
+            .iter()
+            .map(|&(lon, lat)| {
+                // Into the grid's longitude range (which may run past 180).
+                let lon = lon_first + (lon - lon_first).rem_euclid(360.0);
+                let value = if valid_only { g.sample_valid(lon, lat) } else { g.sample(lon, lat) };
+                value.filter(|v| v.is_finite()).unwrap_or(f64::NAN)
+            })
+            .collect()
+    }
+}
+
+/// The bathymetry resampled onto a metric grid over `lo`..`hi`; nodes without data are land.
+fn resample(
+    g: &GeoGrid,
+    frame: &GeoFrame,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    resolution: Option<f64>,
+    warnings: &mut Vec<String>,
+) -> Result<TerrainSpec> {
+    let m = MetricGrid::new(g, frame, (lo, hi), resolution, MAX_GRID_NODES, "world.terrain.resolution", warnings)?;
+    let mut z = m.sample(g, false);
+    let missing = z.iter().filter(|v| v.is_nan()).count();
+    if missing > 0 {
+        z.iter_mut().filter(|v| v.is_nan()).for_each(|v| *v = NO_DATA_ELEVATION);
+        warnings.push(format!(
+            "world.terrain: {missing} of {} nodes have no data in the file (fill or outside it) and are taken as land",
+            z.len()
+        ));
+    }
+    Ok(TerrainSpec::Grid { origin: m.origin, spacing: m.spacing, shape: m.shape, elevations: z })
+}
+
+/// Reads a current forecast file and rewrites `world.current` as a metric grid on the
+/// scenario clock: times are seconds after `epoch` (the file's first time when the scenario
+/// gives none), vectors are turned from east/north into the frame's x/y (which differ by the
+/// meridian convergence away from the origin), and water nodes without data (land or fill in
+/// the forecast, at any time step) become gaps: a motion through their cells is invalid and
+/// names where, since a current made up there could carry a plan onto the rocks. Counted in a
+/// warning. Returns the epoch used.
+fn load_currents(
+    spec: &mut ScenarioSpec,
+    frame: &GeoFrame,
+    source: &str,
+    epoch: Option<DateTime<Utc>>,
+    warnings: &mut Vec<String>,
+) -> Result<DateTime<Utc>> {
+    let CurrentSpec::File { path, u, v, depth, resolution } = spec.world.current.clone() else { unreachable!() };
+    let file = data_file(&path, source, "world.current.path")?;
+    if Format::of(&file, "world.current.path")? != Format::NetCdf {
+        return Err(Error::input(
+            "world.current.path",
+            format!("`{path}`: current forecasts are read from NetCDF (.nc)"),
+        ));
+    }
+    let depth = depth.unwrap_or(0.0);
+    if !depth.is_finite() || !(0.0..=12_000.0).contains(&depth) {
+        return Err(Error::input("world.current.depth", format!("must be from 0 to 12000 m, got {depth}")));
+    }
+    let lo = [spec.world.bounds.min[0], spec.world.bounds.min[1]];
+    let hi = [spec.world.bounds.max[0], spec.world.bounds.max[1]];
+    let subset = cover(frame, lo, hi)?;
+    let series = read_currents(&file, u.as_deref(), v.as_deref(), depth, Some(&subset), 1)?;
+    let epoch = match (epoch, series.times.first()) {
+        (Some(e), _) => e,
+        (None, Some(t)) => *t,
+        (None, None) => return Err(Error::input("world.epoch", "the current file has no time axis: give world.epoch")),
+    };
+    let times: Vec<f64> = if series.times.is_empty() {
+        vec![0.0]
+    } else {
+        series.times.iter().map(|t| (*t - epoch).num_milliseconds() as f64 / 1e3).collect()
+    };
+    let Some(first) = series.u.first() else {
+        return Err(Error::input("world.current.path", format!("`{path}`: no velocity layer inside the box")));
+    };
+    // All time steps share the grid: their product stays within the forecast limit too.
+    let max_nodes = (MAX_FORECAST_VALUES / series.u.len().max(1) as u64) as usize;
+    let m = MetricGrid::new(first, frame, (lo, hi), resolution, max_nodes, "world.current.resolution", warnings)?;
+    let water = water_test(&spec.world.terrain);
+    let mut gaps: Vec<usize> = Vec::new();
+    let (mut us, mut vs) = (Vec::new(), Vec::new());
+    for (gu, gv) in series.u.iter().zip(&series.v) {
+        let (eu, ev) = (m.sample(gu, true), m.sample(gv, true));
+        let mut lu = Vec::with_capacity(eu.len());
+        let mut lv = Vec::with_capacity(ev.len());
+        for (k, (&e, &n)) in eu.iter().zip(&ev).enumerate() {
+            let xy = m.xy(k);
+            if !e.is_finite() || !n.is_finite() {
+                if water(xy.0, xy.1) {
+                    gaps.push(k);
+                }
+                lu.push(0.0);
+                lv.push(0.0);
+                continue;
+            }
+            let (u, v) = frame.east_north_to_xy(m.lonlat[k], xy, e, n);
+            lu.push(u);
+            lv.push(v);
+        }
+        us.push(lu);
+        vs.push(lv);
+    }
+    gaps.sort_unstable();
+    gaps.dedup();
+    if let Some(&k) = gaps.first() {
+        let (x, y) = m.xy(k);
+        warnings.push(format!(
+            "world.current: {} water nodes have no current data at some time step (land or fill in the forecast); routes through them are refused; the first at {}",
+            gaps.len(),
+            frame.place(x, y)
+        ));
+    }
+    let (grid_origin, spacing, shape) = (m.origin, m.spacing, m.shape);
+    spec.world.current = CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs, no_data: gaps };
+    Ok(epoch)
+}
+
+/// A horizontal vector given east and north at the frame point (x, y), in the frame's x and y.
+fn east_north_to_frame(frame: &GeoFrame, x: f64, y: f64, east: f64, north: f64) -> (f64, f64) {
+    frame.east_north_to_xy(frame.inverse(x, y), (x, y), east, north)
+}
+
+/// Whether a metric point is water (seabed below the sea surface) in a resampled terrain grid;
+/// everything is water without terrain.
+fn water_test(terrain: &TerrainSpec) -> impl Fn(f64, f64) -> bool + '_ {
+    move |x, y| match terrain {
+        TerrainSpec::Grid { origin, spacing, shape, elevations } => {
+            let i = (((x - origin[0]) / spacing[0]).round().max(0.0) as usize).min(shape[0] - 1);
+            let j = (((y - origin[1]) / spacing[1]).round().max(0.0) as usize).min(shape[1] - 1);
+            elevations[j * shape[0] + i] < 0.0
+        }
+        _ => true,
+    }
+}

@@ -1,0 +1,43 @@
+//! Scenarios: world, vehicle, mission, cost model and planner settings in one TOML file.
+//!
+//! Loading runs in three steps, each with one-line errors that name the field and value:
+//! TOML syntax, a walk that rejects NaN and infinities anywhere (TOML allows `nan` and `inf`),
+//! then typed decoding and semantic checks (`build.rs`).
+
+mod build;
+mod builtin;
+mod cells;
+pub mod geographic;
+mod jet;
+mod plan;
+pub mod spec;
+
+pub use build::Scenario;
+pub use builtin::{builtin, builtin_names, registry, BUILTIN};
+pub use plan::{default_time_limit_s, LimitSource, PlanRequest, DEFAULT_TIME_LIMIT_S};
+pub use spec::ScenarioSpec;
+
+pub use tidepath::config::{from_value, parse_toml};
+
+use std::path::Path;
+
+use tidepath::error::{Error, Result};
+
+/// Loads a built-in scenario by name, or else a scenario file by path.
+pub fn load(name_or_path: &str) -> Result<Scenario> {
+    if let Some(text) = builtin(name_or_path) {
+        return Scenario::from_toml(text, &format!("builtin:{name_or_path}"));
+    }
+    let path = Path::new(name_or_path);
+    if !path.exists() {
+        return Err(Error::input(
+            "SCENARIO",
+            format!(
+                "'{name_or_path}' is neither a built-in scenario ({}) nor an existing file",
+                builtin_names().collect::<Vec<_>>().join(", ")
+            ),
+        ));
+    }
+    let text = crate::input::read_text(path, "SCENARIO", crate::input::MAX_SCENARIO_BYTES)?;
+    Scenario::from_toml(&text, &path.display().to_string())
+}

@@ -1,0 +1,164 @@
+//! An independent feasibility re-checker for plans: dense sampling of every segment at the
+//! vehicle's own clock, written separately from the `validity` module. It re-derives the clock
+//! from the documented travel model (pieces of at most `current_step` metres, each at the crab
+//! ground speed for the current at its midpoint when the vehicle enters it), checks that the
+//! plan's reported arrival times agree, and samples every piece at the times the vehicle is
+//! there: seabed clearance (vertical) and obstacle clearance (Euclidean, own distance
+//! formulas, obstacles moved to the sample's time) must both be at least the safety distance.
+
+#![allow(dead_code)]
+
+use tidepath::geom::Vec3;
+use tidepath::path::{ModelSettings, TravelModel};
+use tidepath::vehicle::Vehicle;
+use tidepath::world::{Current, Obstacle, Shape, World};
+use tidepath_io::scenario::Scenario;
+use tidepath_io::PlanReport;
+
+/// Samples per piece, at least; pieces longer than `MAX_SPACING` metres get more.
+const MIN_SAMPLES: usize = 24;
+const MAX_SPACING: f64 = 5.0;
+/// Rounding allowance (m) on clearances.
+const TOL: f64 = 1e-6;
+
+/// (start point, end point, start time, end time) of each piece of segment a -> b.
+pub fn clock(
+    world: &World,
+    settings: &ModelSettings,
+    v: f64,
+    a: Vec3,
+    b: Vec3,
+    t0: f64,
+) -> Option<Vec<(Vec3, Vec3, f64, f64)>> {
+    let len = a.distance(b);
+    if len == 0.0 {
+        return Some(vec![(a, b, t0, t0)]);
+    }
+    let d = (b - a) / len;
+    if settings.travel == TravelModel::VectorSum {
+        // One piece at the model's mean speed (documented in the validity module).
+        let floor = 0.05 * v;
+        let va = (d * v + world.current.velocity(a, t0)).length().max(floor);
+        let vb = (d * v + world.current.velocity(b, t0 + len / va)).length().max(floor);
+        return Some(vec![(a, b, t0, t0 + len / (2.0 * va) + len / (2.0 * vb))]);
+    }
+    let n = match world.current {
+        Current::None | Current::Uniform(_) => 1,
+        _ => (len / settings.current_step).ceil().clamp(1.0, 100_000.0) as usize,
+    };
+    let piece = len / n as f64;
+    let mut out = Vec::with_capacity(n);
+    let mut t = t0;
+    for k in 0..n {
+        let p0 = a + d * (piece * k as f64);
+        let p1 = if k + 1 == n { b } else { a + d * (piece * (k + 1) as f64) };
+        let c = world.current.velocity(a + d * (piece * (k as f64 + 0.5)), t);
+        let along = c.dot(d);
+        let cross = c - d * along;
+        let disc = v * v - cross.dot(cross);
+        if disc < 0.0 || along + disc.sqrt() <= 0.0 {
+            return None;
+        }
+        let t1 = t + piece / (along + disc.sqrt());
+        out.push((p0, p1, t, t1));
+        t = t1;
+    }
+    Some(out)
+}
+
+/// Distance from `p` to the surface of `o` at time `t` (0 inside), by its own formulas.
+pub fn distance(o: &Obstacle, p: Vec3, t: f64) -> f64 {
+    let q = p - o.velocity * t;
+    match o.shape {
+        Shape::Sphere { center, radius } => ((q - center).length() - radius).max(0.0),
+        Shape::Circle { center, radius } => {
+            (((q.x - center.x).powi(2) + (q.y - center.y).powi(2)).sqrt() - radius).max(0.0)
+        }
+        Shape::Cylinder { center, radius, z_min, z_max } => {
+            let radial = (((q.x - center.x).powi(2) + (q.y - center.y).powi(2)).sqrt() - radius).max(0.0);
+            let vertical = if q.z < z_min {
+                z_min - q.z
+            } else if q.z > z_max {
+                q.z - z_max
+            } else {
+                0.0
+            };
+            (radial * radial + vertical * vertical).sqrt()
+        }
+        Shape::Box { min, max } => {
+            let dx = (min.x - q.x).max(0.0).max(q.x - max.x);
+            let dy = (min.y - q.y).max(0.0).max(q.y - max.y);
+            let dz = (min.z - q.z).max(0.0).max(q.z - max.z);
+            (dx * dx + dy * dy + dz * dz).sqrt()
+        }
+    }
+}
+
+/// Re-checks one path (start and goal included) with its reported arrival times. Returns the
+/// number of samples taken, or what is wrong.
+pub fn recheck_path(
+    world: &World,
+    vehicle: &Vehicle,
+    settings: &ModelSettings,
+    path: &[Vec3],
+    times: &[f64],
+) -> Result<usize, String> {
+    if path.len() != times.len() {
+        return Err(format!("{} points but {} times", path.len(), times.len()));
+    }
+    let safety = vehicle.safety_distance;
+    let mut samples = 0;
+    let mut t0 = times[0];
+    for (i, w) in path.windows(2).enumerate() {
+        let pieces = clock(world, settings, vehicle.speed, w[0], w[1], t0)
+            .ok_or_else(|| format!("segment {i}: the current blocks the vehicle"))?;
+        for &(p0, p1, ta, tb) in &pieces {
+            let n = MIN_SAMPLES.max((p0.distance(p1) / MAX_SPACING).ceil() as usize);
+            for k in 0..=n {
+                let s = k as f64 / n as f64;
+                let (p, t) = (p0 + (p1 - p0) * s, ta + (tb - ta) * s);
+                samples += 1;
+                let ground = world.terrain.elevation(p.x, p.y);
+                if p.z - ground < safety - TOL {
+                    return Err(format!(
+                        "segment {i}: {p:?} is {:.3} m above the seabed (safety {safety})",
+                        p.z - ground
+                    ));
+                }
+                for (j, o) in world.obstacles.iter().enumerate() {
+                    let d = distance(o, p, t);
+                    if d < safety - TOL {
+                        return Err(format!(
+                            "segment {i}: {p:?} at t = {t:.3} s is {d:.3} m from obstacle {j} (safety {safety})"
+                        ));
+                    }
+                }
+            }
+        }
+        let t1 = pieces.last().map_or(t0, |p| p.3);
+        let reported = times[i + 1];
+        if (t1 - reported).abs() > 1e-9 * t1.abs().max(1.0) {
+            return Err(format!("segment {i}: arrival {t1} by the re-checker's clock, {reported} reported"));
+        }
+        t0 = reported;
+    }
+    Ok(samples)
+}
+
+/// Re-checks every mission of a plan the scenario's evaluation called feasible.
+pub fn recheck_plan(s: &Scenario, r: &PlanReport) -> Result<usize, String> {
+    let mut samples = 0;
+    for (m, mission) in r.missions.iter().zip(&s.missions) {
+        if !m.feasible {
+            continue;
+        }
+        let path = m.points();
+        samples += recheck_path(&s.world, &mission.vehicle, &s.settings, &path, &m.times)
+            .map_err(|e| format!("{} / {} seed {} mission {}: {e}", s.name, r.planner, r.seed, m.name))?;
+    }
+    Ok(samples)
+}
+
+/// A writer of crafted NetCDF headers (size bombs).
+#[allow(dead_code)]
+pub mod cdf1;

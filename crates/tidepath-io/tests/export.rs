@@ -1,0 +1,156 @@
+//! Plans exported for GIS and mission tools: GeoJSON parses (RFC 7946, by the `geojson`
+//! crate) and round-trips; CSV, KML and GPX give back the plan's points; KML and GPX are
+//! well-formed XML; latitude/longitude formats refuse a local scenario.
+
+use tidepath_io::export::{export, ExportFormat, Georef};
+use tidepath_io::scenario::{load, PlanRequest, Scenario};
+use tidepath_io::PlanReport;
+
+fn planned(name: &str) -> (Scenario, PlanReport) {
+    let s = load(name).unwrap();
+    let r = s
+        .plan(&PlanRequest { planner: Some("hybrid".into()), seed: 1, ..PlanRequest::default() }, &mut |_| {})
+        .unwrap();
+    assert!(r.status.is_success(), "{}", r.reason);
+    (s, r)
+}
+
+/// The plan's points in metres from latitude/longitude pairs, through the scenario's frame.
+fn back_to_metres(s: &Scenario, lonlat: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let f = s.frame.as_ref().unwrap();
+    lonlat.iter().map(|&(lon, lat)| f.forward(lon, lat, "t").unwrap()).collect()
+}
+
+fn assert_same_points(s: &Scenario, r: &PlanReport, lonlat: &[(f64, f64)]) {
+    let pts = r.missions[0].points();
+    let xy = back_to_metres(s, lonlat);
+    assert_eq!(xy.len(), pts.len());
+    for (p, q) in pts.iter().zip(&xy) {
+        // Seven decimals of a degree: about 1 cm.
+        assert!((p.x - q.0).abs() < 0.05 && (p.y - q.1).abs() < 0.05, "{p:?} vs {q:?}");
+    }
+}
+
+fn geo(s: &Scenario) -> Georef<'_> {
+    Georef { frame: s.frame.as_ref(), epoch: s.epoch }
+}
+
+#[test]
+fn geojson_parses_and_round_trips() {
+    use geojson::{GeoJson, GeometryValue};
+    let (s, r) = planned("salish");
+    let text = export(&r, ExportFormat::GeoJson, geo(&s)).unwrap();
+    let parsed: GeoJson = text.parse().unwrap();
+    let GeoJson::FeatureCollection(fc) = &parsed else { panic!("not a FeatureCollection") };
+    assert_eq!(fc.features.len(), 1);
+    let f = &fc.features[0];
+    let GeometryValue::LineString { coordinates } = &f.geometry.as_ref().unwrap().value else {
+        panic!("not a LineString")
+    };
+    let lonlat: Vec<(f64, f64)> = coordinates.iter().map(|p| (p[0], p[1])).collect();
+    assert_same_points(&s, &r, &lonlat);
+    assert_eq!(f.property("status").and_then(|v| v.as_str()), Some(r.status.to_string().as_str()));
+    assert_eq!(f.property("time_s").and_then(|v| v.as_array()).map(|a| a.len()), Some(coordinates.len()));
+    // Round trip: written again, parsed again, the same document.
+    let again: GeoJson = parsed.to_string().parse().unwrap();
+    assert_eq!(again, parsed);
+}
+
+#[test]
+fn csv_gives_back_the_points() {
+    let (s, r) = planned("salish");
+    let text = export(&r, ExportFormat::Csv, geo(&s)).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("mission,point,lat,lon,depth_m,time_s,utc"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let lonlat: Vec<(f64, f64)> = rows.iter().map(|c| (c[3].parse().unwrap(), c[2].parse().unwrap())).collect();
+    assert_same_points(&s, &r, &lonlat);
+    let times: Vec<f64> = rows.iter().map(|c| c[5].parse().unwrap()).collect();
+    assert_eq!(times, r.missions[0].times);
+    // A local scenario gives metres.
+    let (d, rd) = planned("headland");
+    let local = export(&rd, ExportFormat::Csv, geo(&d)).unwrap();
+    assert!(local.starts_with("mission,point,x_m,y_m,z_m,time_s\n"), "{local}");
+}
+
+/// Every `tag` element's attributes or text, from a well-formed XML document.
+fn xml_points(text: &str, tag: &[u8]) -> Vec<String> {
+    use quick_xml::events::Event;
+    let mut reader = quick_xml::Reader::from_str(text);
+    let mut out = Vec::new();
+    let mut inside = false;
+    loop {
+        match reader.read_event().expect("well-formed XML") {
+            Event::Start(e) if e.name().as_ref() == tag => {
+                inside = true;
+                let attrs: Vec<String> = e
+                    .attributes()
+                    .map(|a| {
+                        let a = a.unwrap();
+                        format!("{}={}", String::from_utf8_lossy(a.key.as_ref()), String::from_utf8_lossy(&a.value))
+                    })
+                    .collect();
+                if !attrs.is_empty() {
+                    out.push(attrs.join(" "));
+                }
+            }
+            Event::Text(t) if inside => out.push(String::from_utf8_lossy(&t).trim().to_string()),
+            Event::End(e) if e.name().as_ref() == tag => inside = false,
+            Event::Eof => break,
+            _ => {}
+        }
+    }
+    out
+}
+
+#[test]
+fn kml_and_gpx_are_well_formed_and_hold_the_points() {
+    let (s, r) = planned("salish");
+    let kml = export(&r, ExportFormat::Kml, geo(&s)).unwrap();
+    let coords = xml_points(&kml, b"coordinates").join("\n");
+    let lonlat: Vec<(f64, f64)> = coords
+        .split_whitespace()
+        .map(|c| {
+            let v: Vec<f64> = c.split(',').map(|x| x.parse().unwrap()).collect();
+            (v[0], v[1])
+        })
+        .collect();
+    assert_same_points(&s, &r, &lonlat);
+    let gpx = export(&r, ExportFormat::Gpx, geo(&s)).unwrap();
+    let pts = xml_points(&gpx, b"trkpt");
+    let lonlat: Vec<(f64, f64)> = pts
+        .iter()
+        .filter(|a| a.contains("lat="))
+        .map(|a| {
+            let get = |k: &str| a.split(' ').find_map(|kv| kv.strip_prefix(&format!("{k}="))).unwrap().parse().unwrap();
+            (get("lon"), get("lat"))
+        })
+        .collect();
+    assert_same_points(&s, &r, &lonlat);
+}
+
+#[test]
+fn latitude_longitude_formats_refuse_a_local_scenario() {
+    let (d, r) = planned("headland");
+    for f in [ExportFormat::GeoJson, ExportFormat::Kml, ExportFormat::Gpx] {
+        assert!(f.check(None, "--out").is_err());
+        let e = export(&r, f, geo(&d)).unwrap_err().to_string();
+        assert!(e.contains("geographic scenario"), "{e}");
+    }
+    assert!(ExportFormat::of(std::path::Path::new("x.shp"), "--out").unwrap_err().to_string().contains(".geojson"));
+}
+
+/// With an epoch (an ISO departure), GPX points carry UTC times.
+#[test]
+fn iso_departures_give_utc_times() {
+    let text = tidepath_io::scenario::builtin("salish")
+        .unwrap()
+        .replace("goal = [-123.28, 48.40, 0.0]", "goal = [-123.28, 48.40, 0.0]\ndeparture = \"2025-11-12T06:00:00Z\"");
+    let s = Scenario::from_toml(&text, "builtin:t").unwrap();
+    assert_eq!(s.departure_time, 0.0);
+    let r = s.plan(&PlanRequest { planner: Some("hybrid".into()), ..PlanRequest::default() }, &mut |_| {}).unwrap();
+    let gpx = export(&r, ExportFormat::Gpx, geo(&s)).unwrap();
+    let times = xml_points(&gpx, b"time");
+    assert_eq!(times.first().map(String::as_str), Some("2025-11-12T06:00:00.000Z"));
+    assert_eq!(times.len(), r.missions[0].times.len());
+}
