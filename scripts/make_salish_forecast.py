@@ -18,7 +18,7 @@ import numpy as np
 from netCDF4 import Dataset
 
 HERE = os.path.dirname(__file__)
-DATA = os.path.join(HERE, "..", "crates", "tidepath", "data")
+DATA = os.path.join(HERE, "..", "crates", "tidepath-io", "data")
 
 
 def main():
