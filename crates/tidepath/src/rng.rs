@@ -33,7 +33,7 @@ pub fn fill_unit_f64(rng: &mut Rng, out: &mut [f64]) {
 /// bits `lo` of `k = w >> 11` become the double `2^52 + lo`, minus `2^52` is `lo`; the top bit
 /// of `k` adds `0` or `2^52`; every step is exact below `2^53`, as is the final scaling.
 #[inline(always)]
-fn unit_f64(w: u64) -> f64 {
+pub fn unit_f64(w: u64) -> f64 {
     const TWO52_BITS: u64 = 0x4330_0000_0000_0000; // 2^52 as a double
     const TWO52: f64 = (1u64 << 52) as f64;
     const SCALE: f64 = 1.0 / (1u64 << 53) as f64;

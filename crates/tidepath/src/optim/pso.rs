@@ -35,7 +35,7 @@ use rand::Rng as _;
 use super::{clamp, Context, Optimizer, Population};
 use crate::error::{Error, Result};
 use crate::registry::Param;
-use crate::rng::fill_unit_f64;
+use crate::rng::unit_f64;
 
 /// The parameters' ranges, for the planner table.
 pub const PARAMS: &[Param] = &[
@@ -190,8 +190,9 @@ pub struct Pso {
     gbest_cost: f64,
     vmax: Vec<f64>,
     iteration: u64,
-    /// The current iteration's uniform draws (reused, so a step does not allocate).
-    r: Vec<f64>,
+    /// The current iteration's random words, two per coordinate (reused, so a step does not
+    /// allocate).
+    r: Vec<u64>,
 }
 
 impl Pso {
@@ -270,7 +271,7 @@ impl Optimizer for Pso {
         self.gbest_cost = f64::INFINITY;
         self.update_bests();
         self.iteration = 0;
-        self.r = vec![0.0; 2 * n * dim];
+        self.r = vec![0; 2 * n * dim];
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
@@ -280,9 +281,10 @@ impl Optimizer for Pso {
         let dim = self.x.dim();
         let n = self.x.len();
         // The iteration's draws, all at once: r1 then r2 for each dimension of each particle,
-        // particle by particle (the order fixes the random stream). The buffer is reused.
-        self.r.resize(2 * n * dim, 0.0);
-        fill_unit_f64(ctx.rng(), &mut self.r);
+        // particle by particle (the order fixes the random stream), as the 64-bit words
+        // `random::<f64>()` would take, turned into the same U(0,1) values in the loop.
+        self.r.resize(2 * n * dim, 0);
+        ctx.rng().fill(&mut self.r[..]);
         let (lower, upper) = (&ctx.lower()[..dim], &ctx.upper()[..dim]);
         let (vmax, gbest) = (&self.vmax[..dim], &self.gbest[..dim]);
         for i in 0..n {
@@ -292,7 +294,7 @@ impl Optimizer for Pso {
             let r = &self.r[2 * i * dim..2 * (i + 1) * dim];
             let others = pbest.iter().zip(gbest).zip(vmax).zip(lower.iter().zip(upper)).zip(r.chunks_exact(2));
             for ((x, v), ((((&p, &g), &vm), (&lo, &hi)), r)) in x.iter_mut().zip(v.iter_mut()).zip(others) {
-                let (r1, r2, xi) = (r[0], r[1], *x);
+                let (r1, r2, xi) = (unit_f64(r[0]), unit_f64(r[1]), *x);
                 let nv = w * *v + c1 * r1 * (p - xi) + c2 * r2 * (g - xi);
                 let vd = clamp(nv, -vm, vm);
                 let nx = xi + vd;
