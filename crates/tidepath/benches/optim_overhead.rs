@@ -18,9 +18,11 @@
 //! core. Every run here is single-threaded (the test functions are too cheap for rayon, see
 //! `Objective::parallel_hint`), so the thread's CPU time is the whole cost.
 //!
-//! After the measurements the bench prints each optimizer's time over both floors (from
-//! criterion's own estimates, the median) and keeps the table in
-//! `target/criterion/optim_overhead/ratios.txt`.
+//! After criterion's measurements (each benchmark's own statistics), the ratios come from
+//! paired rounds: the bare loop, then each optimizer next to its replay, 21 times over, so a
+//! change in the machine's load hits both sides of a ratio alike (ratios of medians measured
+//! minutes apart do not have that). The bench prints each optimizer's median ratio with its
+//! quartiles over both floors and keeps the table in `target/criterion/optim_overhead/ratios.txt`.
 
 use std::path::PathBuf;
 use std::sync::Mutex;
@@ -31,7 +33,7 @@ use criterion::{black_box, BatchSize, Criterion};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use tidepath::optim::functions::{Function, FunctionObjective};
-use tidepath::optim::{run, Objective, Scratch, StopReason, Termination};
+use tidepath::optim::{run, Objective, Optimizer, Scratch, StopReason, Termination};
 use tidepath::planner::{build_optimizer, registry, BuildPlanner};
 use tidepath::rng::run_rng;
 
@@ -98,38 +100,105 @@ fn bare_loop(obj: &dyn Objective, points: &[f64], scratch: &mut Scratch) -> f64 
     best
 }
 
-fn bench<M: Measurement>(c: &mut Criterion<M>) {
-    let obj = objective();
-    assert!(!obj.parallel_hint(), "runs must be single-threaded for the thread's CPU time to be their cost");
-    let budget = Termination::evaluations(EVALUATIONS);
+fn make(id: &str) -> Box<dyn Optimizer> {
+    build_optimizer(id, None, Some(POPULATION)).expect("registry optimizer builds")
+}
+
+fn run_once(opt: &mut dyn Optimizer, obj: &dyn Objective) -> f64 {
+    run(opt, obj, &Termination::evaluations(EVALUATIONS), &mut run_rng(1, 0), true, &[], &mut |_| {}).best_cost
+}
+
+/// The work measured: the bare loop's points, and each optimizer with the points it evaluates.
+struct Work {
+    obj: FunctionObjective,
+    points: Vec<f64>,
+    optimizers: Vec<(&'static str, Vec<f64>)>,
+}
+
+impl Work {
+    fn new() -> Self {
+        let obj = objective();
+        assert!(!obj.parallel_hint(), "runs must be single-threaded for the thread's CPU time to be their cost");
+        let budget = Termination::evaluations(EVALUATIONS);
+        let optimizers = optimizer_ids()
+            .into_iter()
+            .map(|id| {
+                // The timed runs' points, recorded once: exactly the budget, same results.
+                let recorder = Recorder { inner: &obj, points: Mutex::new(Vec::new()) };
+                let recorded = run(make(id).as_mut(), &recorder, &budget, &mut run_rng(1, 0), true, &[], &mut |_| {});
+                let stop = (recorded.evaluations, recorded.stop_reason);
+                assert_eq!(stop, (EVALUATIONS, StopReason::MaxEvaluations), "{id}");
+                let replay = recorder.points.into_inner().expect("recorder lock");
+                assert_eq!(replay.len(), EVALUATIONS as usize * DIM, "{id}");
+                assert_eq!(run_once(make(id).as_mut(), &obj), recorded.best_cost, "{id}: seeded runs differ");
+                (id, replay)
+            })
+            .collect();
+        Self { points: bare_points(&obj), obj, optimizers }
+    }
+}
+
+fn bench<M: Measurement>(c: &mut Criterion<M>, work: &Work) {
+    let obj = &work.obj;
     let mut group = c.benchmark_group(GROUP);
     group.sample_size(20);
-
-    let points = bare_points(&obj);
     let mut scratch = Scratch::default();
-    group.bench_function("bare", |b| b.iter(|| bare_loop(&obj, &points, &mut scratch)));
-
-    for id in optimizer_ids() {
-        let make = || build_optimizer(id, None, Some(POPULATION)).expect("registry optimizer builds");
-        // Once outside the timing, the timed run's points: exactly the budget, same results.
-        let recorder = Recorder { inner: &obj, points: Mutex::new(Vec::new()) };
-        let recorded = run(make().as_mut(), &recorder, &budget, &mut run_rng(1, 0), true, &[], &mut |_| {});
-        assert_eq!((recorded.evaluations, recorded.stop_reason), (EVALUATIONS, StopReason::MaxEvaluations), "{id}");
-        let replay = recorder.points.into_inner().expect("recorder lock");
-        assert_eq!(replay.len(), EVALUATIONS as usize * DIM, "{id}");
-        let check = run(make().as_mut(), &obj, &budget, &mut run_rng(1, 0), true, &[], &mut |_| {});
-        assert_eq!(check.history, recorded.history, "{id}: seeded runs differ");
-
-        group.bench_function(id, |b| {
-            b.iter_batched(
-                make,
-                |mut opt| run(opt.as_mut(), &obj, &budget, &mut run_rng(1, 0), true, &[], &mut |_| {}).best_cost,
-                BatchSize::LargeInput,
-            )
+    group.bench_function("bare", |b| b.iter(|| bare_loop(obj, &work.points, &mut scratch)));
+    for (id, replay) in &work.optimizers {
+        group.bench_function(*id, |b| {
+            b.iter_batched(|| make(id), |mut opt| run_once(opt.as_mut(), obj), BatchSize::LargeInput)
         });
-        group.bench_function(format!("replay-{id}"), |b| b.iter(|| bare_loop(&obj, &replay, &mut scratch)));
+        group.bench_function(format!("replay-{id}"), |b| b.iter(|| bare_loop(obj, replay, &mut scratch)));
     }
     group.finish();
+}
+
+/// Paired rounds: in each round the bare loop, then every optimizer next to its replay (in
+/// alternating order), so a change in the machine's load hits both sides of a ratio alike.
+/// Returns each optimizer's per-round ratios over the bare loop and over its replay.
+fn paired<M: Measurement>(m: &M, work: &Work, rounds: usize) -> Vec<(&'static str, Vec<f64>, Vec<f64>)> {
+    let time = |f: &mut dyn FnMut()| {
+        let start = m.start();
+        f();
+        m.to_f64(&m.end(start))
+    };
+    let mut scratch = Scratch::default();
+    let mut out: Vec<_> = work.optimizers.iter().map(|(id, _)| (*id, Vec::new(), Vec::new())).collect();
+    for round in 0..rounds {
+        let bare = time(&mut || {
+            black_box(bare_loop(&work.obj, &work.points, &mut scratch));
+        });
+        for ((id, replay), (_, over_bare, over_replay)) in work.optimizers.iter().zip(&mut out) {
+            let mut opt = make(id);
+            let mut t_opt = || {
+                time(&mut || {
+                    black_box(run_once(opt.as_mut(), &work.obj));
+                })
+            };
+            let mut t_replay = || {
+                time(&mut || {
+                    black_box(bare_loop(&work.obj, replay, &mut scratch));
+                })
+            };
+            let (t, r) = if round % 2 == 0 {
+                let t = t_opt();
+                (t, t_replay())
+            } else {
+                let r = t_replay();
+                (t_opt(), r)
+            };
+            over_bare.push(t / bare);
+            over_replay.push(t / r);
+        }
+    }
+    out
+}
+
+/// Median and quartiles.
+fn quartiles(v: &mut [f64]) -> (f64, f64, f64) {
+    v.sort_by(f64::total_cmp);
+    let at = |q: f64| v[((v.len() - 1) as f64 * q).round() as usize];
+    (at(0.5), at(0.25), at(0.75))
 }
 
 /// Criterion's output folder, as criterion finds it: `CRITERION_HOME`, else `criterion` in the
@@ -152,31 +221,38 @@ fn median_ns(id: &str, since: SystemTime) -> Option<f64> {
     json["median"]["point_estimate"].as_f64()
 }
 
-/// Prints and keeps each optimizer's median time over the bare loop's and over its replay's.
-fn ratios(since: SystemTime) {
-    let bare = median_ns("bare", since);
-    let mut table = format!(
-        "Rastrigin-{DIM}, {EVALUATIONS} evaluations, population {POPULATION} (criterion medians)\n\
-         {:<6} {:>10}   {:>10} {:>7}   {:>10} {:>7}\n",
-        "", "optimizer", "bare", "ratio", "replay", "ratio"
-    );
-    let ms = |t: Option<f64>| t.map_or("-".to_string(), |t| format!("{:.2} ms", t / 1e6));
-    let ratio = |a: Option<f64>, b: Option<f64>| a.zip(b).map_or("-".to_string(), |(a, b)| format!("{:.2}x", a / b));
-    let mut any = false;
-    for id in optimizer_ids() {
-        let (t, replay) = (median_ns(id, since), median_ns(&format!("replay-{id}"), since));
-        any |= t.is_some();
-        table += &format!(
-            "{id:<6} {:>10}   {:>10} {:>7}   {:>10} {:>7}\n",
-            ms(t),
-            ms(bare),
-            ratio(t, bare),
-            ms(replay),
-            ratio(t, replay)
-        );
+const ROUNDS: usize = 21;
+
+/// Prints and keeps the table: criterion's medians, and the ratios from paired rounds.
+fn report<M: Measurement>(m: &M, work: &Work, since: SystemTime) {
+    if median_ns("bare", since).is_none() {
+        return; // Not measured in this process (a filter, or `--test`).
     }
-    if !any {
-        return; // Nothing measured in this process (a filter, or `--test`).
+    let ms = |t: Option<f64>| t.map_or("-".to_string(), |t| format!("{:.2} ms", t / 1e6));
+    let mut table = format!(
+        "Rastrigin-{DIM}, {EVALUATIONS} evaluations, population {POPULATION}\n\
+         criterion medians: bare {}{}\n\
+         ratios: median [quartiles] of {ROUNDS} paired rounds\n\
+         {:<6} {:>24} {:>24}\n",
+        ms(median_ns("bare", since)),
+        work.optimizers
+            .iter()
+            .map(|(id, _)| format!(
+                ", {id} {} (replay {})",
+                ms(median_ns(id, since)),
+                ms(median_ns(&format!("replay-{id}"), since))
+            ))
+            .collect::<String>(),
+        "",
+        "over bare",
+        "over replay",
+    );
+    for (id, mut over_bare, mut over_replay) in paired(m, work, ROUNDS) {
+        let cell = |v: &mut [f64]| {
+            let (med, lo, hi) = quartiles(v);
+            format!("{med:.2}x [{lo:.2}-{hi:.2}]")
+        };
+        table += &format!("{id:<6} {:>24} {:>24}\n", cell(&mut over_bare), cell(&mut over_replay));
     }
     print!("\n{table}");
     let out = criterion_dir().join(GROUP).join("ratios.txt");
@@ -259,11 +335,13 @@ mod cpu_time {
 
 fn main() {
     let since = SystemTime::now();
+    let work = Work::new();
     #[cfg(unix)]
-    let mut c = Criterion::default().with_measurement(cpu_time::ThreadCpuTime).configure_from_args();
+    let (mut c, m) = (Criterion::default().with_measurement(cpu_time::ThreadCpuTime), cpu_time::ThreadCpuTime);
     #[cfg(not(unix))]
-    let mut c = Criterion::default().configure_from_args();
-    bench(&mut c);
+    let (mut c, m) = (Criterion::default(), criterion::measurement::WallTime);
+    c = c.configure_from_args();
+    bench(&mut c, &work);
     c.final_summary();
-    ratios(since);
+    report(&m, &work, since);
 }
