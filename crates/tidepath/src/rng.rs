@@ -4,10 +4,44 @@
 //! `&mut rng`; nothing in tidepath reads a global or thread-local generator. Parallel
 //! evaluation never draws random numbers, so results do not depend on the thread count.
 
-use rand::SeedableRng;
+use rand::{Rng as _, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 pub type Rng = ChaCha8Rng;
+
+/// Fills `out` with uniform draws in [0, 1): the same values, from the same part of the
+/// stream, as `out.len()` successive calls of `rng.random::<f64>()`, but drawn in bulk (the
+/// generator's words are copied a block at a time instead of one call per value).
+///
+/// `random::<f64>()` takes one 64-bit word and keeps its 53 high bits; `fill` on `u64`s
+/// hands out the same words in the same order, so the two can be mixed freely.
+pub fn fill_unit_f64(rng: &mut Rng, out: &mut [f64]) {
+    const CHUNK: usize = 32;
+    let mut words = [0u64; CHUNK];
+    for chunk in out.chunks_mut(CHUNK) {
+        let words = &mut words[..chunk.len()];
+        rng.fill(words);
+        for (o, &w) in chunk.iter_mut().zip(words.iter()) {
+            *o = unit_f64(w);
+        }
+    }
+}
+
+/// `random::<f64>()`'s value for the word `w`: `(w >> 11) as f64 / 2^53`, computed with bit
+/// operations that vectorize (x86-64 without AVX-512 has no vector integer-to-float
+/// conversion, and the scalar one serialises the loop). Exact, hence the same bits: the low 52
+/// bits `lo` of `k = w >> 11` become the double `2^52 + lo`, minus `2^52` is `lo`; the top bit
+/// of `k` adds `0` or `2^52`; every step is exact below `2^53`, as is the final scaling.
+#[inline(always)]
+pub fn unit_f64(w: u64) -> f64 {
+    const TWO52_BITS: u64 = 0x4330_0000_0000_0000; // 2^52 as a double
+    const TWO52: f64 = (1u64 << 52) as f64;
+    const SCALE: f64 = 1.0 / (1u64 << 53) as f64;
+    let k = w >> 11;
+    let lo = f64::from_bits(TWO52_BITS | (k & ((1 << 52) - 1))) - TWO52;
+    let hi = f64::from_bits(TWO52_BITS & 0u64.wrapping_sub(k >> 52));
+    (lo + hi) * SCALE
+}
 
 /// The stream of run `run` under master seed `seed`.
 pub fn run_rng(seed: u64, run: u64) -> Rng {
@@ -44,7 +78,6 @@ fn splitmix64(mut z: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rand::Rng as _;
 
     #[test]
     fn streams_differ_and_repeat() {
@@ -52,6 +85,39 @@ mod tests {
         let b: u64 = run_rng(7, 1).random();
         assert_ne!(a, b);
         assert_eq!(a, run_rng(7, 0).random::<u64>());
+    }
+
+    #[test]
+    fn bulk_uniform_draws_equal_single_draws() {
+        // Odd lengths and a 32-bit draw in between shift the stream off word and block
+        // boundaries; the bulk draws must still be the single draws, bit for bit.
+        let mut a = run_rng(11, 3);
+        let mut b = a.clone();
+        for len in [0usize, 1, 7, 31, 32, 33, 64, 100, 257] {
+            let _: u32 = a.random();
+            let _: u32 = b.random();
+            let mut bulk = vec![0.0; len];
+            fill_unit_f64(&mut a, &mut bulk);
+            let single: Vec<f64> = (0..len).map(|_| b.random::<f64>()).collect();
+            assert_eq!(
+                bulk.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                single.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                "len {len}"
+            );
+            assert!(bulk.iter().all(|v| (0.0..1.0).contains(v)));
+        }
+        assert_eq!(a.random::<u64>(), b.random::<u64>());
+    }
+
+    #[test]
+    fn unit_conversion_is_exact() {
+        let reference = |w: u64| (w >> 11) as f64 / (1u64 << 53) as f64;
+        let mut words = vec![0, 1, 1 << 11, (1 << 11) - 1, 1 << 63, (1 << 63) - 1, u64::MAX, u64::MAX - (1 << 11)];
+        let mut rng = run_rng(5, 0);
+        words.extend((0..100_000).map(|_| rng.random::<u64>()));
+        for w in words {
+            assert_eq!(unit_f64(w).to_bits(), reference(w).to_bits(), "word {w:#x}");
+        }
     }
 
     #[test]

@@ -28,6 +28,7 @@ use rand::Rng as _;
 use super::{Context, Optimizer, Population};
 use crate::error::{Error, Result};
 use crate::registry::Param;
+use crate::rng::fill_unit_f64;
 
 /// The parameters' ranges, for the planner table.
 pub const PARAMS: &[Param] = &[
@@ -77,6 +78,8 @@ pub struct De {
     cost: Vec<f64>,
     trial: Population,
     trial_cost: Vec<f64>,
+    /// One target's crossover draws (reused, so a step does not allocate).
+    u: Vec<f64>,
 }
 
 impl De {
@@ -87,6 +90,7 @@ impl De {
             cost: Vec::new(),
             trial: Population::zeros(0, 0),
             trial_cost: Vec::new(),
+            u: Vec::new(),
         }
     }
 
@@ -97,6 +101,7 @@ impl De {
 
 /// The bound rule for one mutant component: inside the box it is kept; below `lo` it becomes
 /// `(parent + lo) / 2`, above `hi` it becomes `(parent + hi) / 2`.
+#[inline]
 pub fn bounce_to_midpoint(mutant: f64, parent: f64, lo: f64, hi: f64) -> f64 {
     if mutant < lo {
         0.5 * (parent + lo)
@@ -126,6 +131,7 @@ impl Optimizer for De {
         ctx.evaluate_population(&self.x, &mut self.cost);
         self.trial = self.x.clone();
         self.trial_cost = vec![f64::INFINITY; n];
+        self.u = vec![0.0; ctx.dim()];
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
@@ -152,18 +158,19 @@ impl Optimizer for De {
                 }
             };
             let jrand = ctx.rng().random_range(0..dim.max(1));
-            for j in 0..dim {
-                let u: f64 = ctx.rng().random();
-                let parent = self.x.row(i)[j];
-                let value = if u < cr || j == jrand {
-                    let mutant = self.x.row(r1)[j] + f * (self.x.row(r2)[j] - self.x.row(r3)[j]);
-                    bounce_to_midpoint(mutant, parent, ctx.lower()[j], ctx.upper()[j])
-                } else {
-                    parent
-                };
-                self.trial.row_mut(i)[j] = value;
+            // One U(0,1) per component, drawn in bulk into a reused buffer.
+            fill_unit_f64(ctx.rng(), &mut self.u);
+            let (lower, upper) = (&ctx.lower()[..dim], &ctx.upper()[..dim]);
+            let (parent, a, b, c) = (self.x.row(i), self.x.row(r1), self.x.row(r2), self.x.row(r3));
+            let trial = self.trial.row_mut(i);
+            // The mutant component is computed for every j (it is pure) and kept where the
+            // crossover takes it, so the loop has no branch.
+            let sources = parent.iter().zip(a).zip(b.iter().zip(c)).zip(lower.iter().zip(upper)).zip(&self.u);
+            for (j, (t, ((((&p, &a), (&b, &c)), (&lo, &hi)), &u))) in trial.iter_mut().zip(sources).enumerate() {
+                let mutant = bounce_to_midpoint(a + f * (b - c), p, lo, hi);
+                *t = if (u < cr) | (j == jrand) { mutant } else { p };
             }
-            ctx.repair(self.trial.row_mut(i));
+            ctx.repair(trial);
         }
         ctx.evaluate_population(&self.trial, &mut self.trial_cost);
         for i in 0..n {

@@ -42,7 +42,7 @@ use rand_distr::StandardNormal;
 use super::{Context, Optimizer, Population};
 use crate::error::{Error, Result};
 use crate::registry::Param;
-use crate::rng::Rng;
+use crate::rng::{fill_unit_f64, Rng};
 
 /// The parameters' ranges, for the planner table.
 pub const PARAMS: &[Param] = &[
@@ -196,6 +196,30 @@ fn spin(cum: &[f64], rng: &mut Rng) -> usize {
     }
 }
 
+/// `x`'s place in the order of [`f64::total_cmp`], as an unsigned integer.
+fn total_order_key(x: f64) -> u64 {
+    let b = x.to_bits() as i64;
+    ((b ^ ((((b >> 63) as u64) >> 1) as i64)) as u64) ^ (1 << 63)
+}
+
+/// Reorders `order` (a permutation of the individuals) by cost, NaN counting as +inf: the
+/// result of a stable sort of `order` by `total_cmp` of the costs (so tied individuals keep
+/// their relative place in `order`, which holds the previous generation's ranking). It is
+/// done as an unstable sort of integer keys (cost, place) in `keys`, which is the same order
+/// because no two keys are equal, without the comparison closure's cost. Places and indices
+/// take 32 bits each (populations are at most `MAX_POPULATION`, far below 2^32).
+fn rank(order: &mut [usize], cost: &[f64], keys: &mut Vec<u128>) {
+    keys.clear();
+    keys.extend(order.iter().enumerate().map(|(place, &i)| {
+        let c = if cost[i].is_nan() { f64::INFINITY } else { cost[i] };
+        (u128::from(total_order_key(c)) << 64) | ((place as u128) << 32) | i as u128
+    }));
+    keys.sort_unstable();
+    for (o, &k) in order.iter_mut().zip(keys.iter()) {
+        *o = (k as u32) as usize;
+    }
+}
+
 /// Decodes a `bits`-bit integer to `[lo, hi]`.
 pub fn decode(k: u64, bits: u32, lo: f64, hi: f64) -> f64 {
     let full = ((1u64 << bits) - 1) as f64;
@@ -245,10 +269,17 @@ pub struct Ga {
     off_chrom: Vec<u64>,
     order: Vec<usize>,
     cum: Vec<f64>,
-    ca: Vec<f64>,
+    /// The dropped second child of an odd offspring count.
     cb: Vec<f64>,
     ka: Vec<u64>,
     kb: Vec<u64>,
+    /// Copies of the box, so mutation reads them while drawing from the run's stream.
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+    /// One binary child's mutation draws, one per bit.
+    bit_draws: Vec<f64>,
+    /// Sort keys for the elitism ranking (see [`rank`]).
+    rank_keys: Vec<u128>,
 }
 
 impl Ga {
@@ -268,10 +299,13 @@ impl Ga {
             off_chrom: Vec::new(),
             order: Vec::new(),
             cum: Vec::new(),
-            ca: Vec::new(),
             cb: Vec::new(),
             ka: Vec::new(),
             kb: Vec::new(),
+            lower: Vec::new(),
+            upper: Vec::new(),
+            bit_draws: Vec::new(),
+            rank_keys: Vec::new(),
         }
     }
 
@@ -283,25 +317,26 @@ impl Ga {
         self.params.coding == GaCoding::Binary
     }
 
-    /// Gaussian mutation of a real-coded child, then clamp to the box.
-    fn mutate_real(child: &mut [f64], pm: f64, sigma: &[f64], ctx: &mut Context<'_>) {
-        for (d, g) in child.iter_mut().enumerate() {
-            let u: f64 = ctx.rng().random();
+    /// Gaussian mutation of a real-coded child, then clamp to the box (`bounds`: lower, upper).
+    fn mutate_real(child: &mut [f64], pm: f64, sigma: &[f64], bounds: (&[f64], &[f64]), rng: &mut Rng) {
+        let n = child.len();
+        let (sigma, lower, upper) = (&sigma[..n], &bounds.0[..n], &bounds.1[..n]);
+        for d in 0..n {
+            let u: f64 = rng.random();
             if u < pm {
-                let z: f64 = ctx.rng().sample(StandardNormal);
-                *g = (*g + sigma[d] * z).clamp(ctx.lower()[d], ctx.upper()[d]);
+                let z: f64 = rng.sample(StandardNormal);
+                child[d] = (child[d] + sigma[d] * z).clamp(lower[d], upper[d]);
             }
         }
     }
 
-    /// Bit-flip mutation: one U(0,1) per bit, most significant bit of variable 0 first.
-    fn mutate_bits(child: &mut [u64], pm: f64, bits: u32, rng: &mut Rng) {
-        for word in child.iter_mut() {
-            for j in (0..bits).rev() {
-                let u: f64 = rng.random();
-                if u < pm {
-                    *word ^= 1u64 << j;
-                }
+    /// Bit-flip mutation: one U(0,1) per bit, most significant bit of variable 0 first. The
+    /// draws go through `u` (one per bit of `child`), drawn in bulk.
+    fn mutate_bits(child: &mut [u64], pm: f64, bits: u32, u: &mut [f64], rng: &mut Rng) {
+        fill_unit_f64(rng, u);
+        for (word, u) in child.iter_mut().zip(u.chunks_exact(bits as usize)) {
+            for (j, &u) in (0..bits).rev().zip(u) {
+                *word ^= u64::from(u < pm) << j;
             }
         }
     }
@@ -351,6 +386,7 @@ impl Optimizer for Ga {
             self.off_chrom = vec![0; m * dim];
             self.ka = vec![0; dim];
             self.kb = vec![0; dim];
+            self.bit_draws = vec![0.0; dim * bits as usize];
         } else {
             self.x = Population::initial(n, ctx);
             for i in 0..n {
@@ -365,8 +401,10 @@ impl Optimizer for Ga {
         self.off_cost = vec![f64::INFINITY; m];
         self.order = (0..n).collect();
         self.cum = vec![0.0; n];
-        self.ca = vec![0.0; dim];
         self.cb = vec![0.0; dim];
+        self.lower = ctx.lower().to_vec();
+        self.upper = ctx.upper().to_vec();
+        self.rank_keys = Vec::with_capacity(n);
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
@@ -379,10 +417,8 @@ impl Optimizer for Ga {
         let pm = self.pm;
         let binary = self.binary();
 
-        // Rank (NaN last, ties keep the lower index) for elitism.
-        let cost = &self.cost;
-        let key = |i: usize| if cost[i].is_nan() { f64::INFINITY } else { cost[i] };
-        self.order.sort_by(|&a, &b| key(a).total_cmp(&key(b)));
+        // Rank (NaN last) for elitism.
+        rank(&mut self.order, &self.cost, &mut self.rank_keys);
 
         // Roulette weights (see `roulette_fitness`), accumulated in place.
         roulette_fitness(&self.cost, &mut self.cum);
@@ -407,17 +443,21 @@ impl Optimizer for Ga {
                     let cut = ctx.rng().random_range(1..len);
                     one_point_bits(&mut self.ka, &mut self.kb, bits, cut);
                 }
-                Self::mutate_bits(&mut self.ka, pm, bits, ctx.rng());
+                Self::mutate_bits(&mut self.ka, pm, bits, &mut self.bit_draws, ctx.rng());
                 self.off_chrom[k * dim..(k + 1) * dim].copy_from_slice(&self.ka);
                 Self::decode_into(&self.ka, bits, self.off_x.row_mut(k), ctx);
                 if second {
-                    Self::mutate_bits(&mut self.kb, pm, bits, ctx.rng());
+                    Self::mutate_bits(&mut self.kb, pm, bits, &mut self.bit_draws, ctx.rng());
                     self.off_chrom[(k + 1) * dim..(k + 2) * dim].copy_from_slice(&self.kb);
                     Self::decode_into(&self.kb, bits, self.off_x.row_mut(k + 1), ctx);
                 }
             } else {
-                self.ca.copy_from_slice(self.x.row(a));
-                self.cb.copy_from_slice(self.x.row(b));
+                // The children are built in their offspring rows (the dropped second child of
+                // an odd count in `cb`).
+                let (ca, cb) =
+                    if second { self.off_x.two_rows_mut(k, k + 1) } else { (self.off_x.row_mut(k), &mut self.cb[..]) };
+                ca.copy_from_slice(self.x.row(a));
+                cb.copy_from_slice(self.x.row(b));
                 if cross && dim >= 2 {
                     // Two distinct cut points among the D - 1 gene boundaries 1..D.
                     let (lo, hi) = if dim == 2 {
@@ -430,15 +470,14 @@ impl Optimizer for Ga {
                         }
                         (p.min(q), p.max(q))
                     };
-                    self.ca[lo..hi].swap_with_slice(&mut self.cb[lo..hi]);
+                    ca[lo..hi].swap_with_slice(&mut cb[lo..hi]);
                 }
-                Self::mutate_real(&mut self.ca, pm, &self.sigma, ctx);
-                ctx.repair(&mut self.ca);
-                self.off_x.row_mut(k).copy_from_slice(&self.ca);
+                let bounds = (&self.lower[..], &self.upper[..]);
+                Self::mutate_real(ca, pm, &self.sigma, bounds, ctx.rng());
+                ctx.repair(ca);
                 if second {
-                    Self::mutate_real(&mut self.cb, pm, &self.sigma, ctx);
-                    ctx.repair(&mut self.cb);
-                    self.off_x.row_mut(k + 1).copy_from_slice(&self.cb);
+                    Self::mutate_real(cb, pm, &self.sigma, bounds, ctx.rng());
+                    ctx.repair(cb);
                 }
             }
             k += 2;
@@ -454,10 +493,8 @@ impl Optimizer for Ga {
                 self.next_chrom[slot * dim..(slot + 1) * dim].copy_from_slice(&self.chrom[e * dim..(e + 1) * dim]);
             }
         }
-        for j in 0..m {
-            self.next_x.copy_row_from(elites + j, &self.off_x, j);
-            self.next_cost[elites + j] = self.off_cost[j];
-        }
+        self.next_x.as_flat_mut()[elites * dim..].copy_from_slice(self.off_x.as_flat());
+        self.next_cost[elites..].copy_from_slice(&self.off_cost);
         if binary {
             self.next_chrom[elites * dim..].copy_from_slice(&self.off_chrom);
         }
@@ -523,6 +560,27 @@ mod tests {
         let picks: Vec<usize> = (0..200).map(|_| spin(&[0.0, 0.0, 0.0], &mut rng)).collect();
         assert!((0..3).all(|i| picks.contains(&i)));
         assert!((0..200).all(|_| spin(&[0.0, 1.0, 1.0, 2.0], &mut rng) != 0 && spin(&[1.0, 1.0, 2.0], &mut rng) != 1));
+    }
+
+    #[test]
+    fn rank_is_a_stable_sort_of_the_previous_order() {
+        use rand::seq::SliceRandom;
+        let mut rng = crate::rng::Rng::seed_from_u64(9);
+        let values = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -0.0, 0.0, 1.0, -1.0, 2.5, 1e300, -1e-300];
+        let mut keys = Vec::new();
+        for n in [1usize, 2, 3, 8, 40, 41, 200] {
+            let mut order: Vec<usize> = (0..n).collect();
+            order.shuffle(&mut rng);
+            for _ in 0..20 {
+                // Few distinct values, so ties (and NaN, infinities, signed zeros) are common.
+                let cost: Vec<f64> = (0..n).map(|_| values[rng.random_range(0..values.len())]).collect();
+                let key = |i: usize| if cost[i].is_nan() { f64::INFINITY } else { cost[i] };
+                let mut expected = order.clone();
+                expected.sort_by(|&a, &b| key(a).total_cmp(&key(b)));
+                rank(&mut order, &cost, &mut keys);
+                assert_eq!(order, expected, "n = {n}, costs {cost:?}");
+            }
+        }
     }
 
     #[test]

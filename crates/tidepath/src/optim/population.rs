@@ -67,6 +67,17 @@ impl Population {
         &self.data
     }
 
+    pub fn as_flat_mut(&mut self) -> &mut [f64] {
+        &mut self.data
+    }
+
+    /// Rows `i` and `j` (`i < j`), both mutable.
+    pub fn two_rows_mut(&mut self, i: usize, j: usize) -> (&mut [f64], &mut [f64]) {
+        assert!(i < j, "two_rows_mut({i}, {j})");
+        let (head, tail) = self.data.split_at_mut(j * self.dim);
+        (&mut head[i * self.dim..(i + 1) * self.dim], &mut tail[..self.dim])
+    }
+
     pub fn rows(&self) -> impl Iterator<Item = &[f64]> {
         self.data.chunks_exact(self.dim.max(1))
     }
@@ -74,5 +85,22 @@ impl Population {
     /// Copies row `src` of `other` into row `dst` of `self`.
     pub fn copy_row_from(&mut self, dst: usize, other: &Population, src: usize) {
         self.row_mut(dst).copy_from_slice(other.row(src));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_rows_mut_are_the_rows() {
+        let mut p = Population::zeros(4, 3);
+        p.as_flat_mut().iter_mut().enumerate().for_each(|(k, v)| *v = k as f64);
+        let (a, b) = p.two_rows_mut(1, 3);
+        assert_eq!((&a[..], &b[..]), (&[3.0, 4.0, 5.0][..], &[9.0, 10.0, 11.0][..]));
+        a[0] = -1.0;
+        b[2] = -2.0;
+        assert_eq!(p.row(1)[0], -1.0);
+        assert_eq!(p.row(3)[2], -2.0);
     }
 }

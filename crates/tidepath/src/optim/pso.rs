@@ -32,9 +32,10 @@
 
 use rand::Rng as _;
 
-use super::{Context, Optimizer, Population};
+use super::{clamp, Context, Optimizer, Population};
 use crate::error::{Error, Result};
 use crate::registry::Param;
+use crate::rng::unit_f64;
 
 /// The parameters' ranges, for the planner table.
 pub const PARAMS: &[Param] = &[
@@ -189,6 +190,9 @@ pub struct Pso {
     gbest_cost: f64,
     vmax: Vec<f64>,
     iteration: u64,
+    /// The current iteration's random words, two per coordinate (reused, so a step does not
+    /// allocate).
+    r: Vec<u64>,
 }
 
 impl Pso {
@@ -204,6 +208,7 @@ impl Pso {
             gbest_cost: f64::INFINITY,
             vmax: Vec::new(),
             iteration: 0,
+            r: Vec::new(),
         }
     }
 
@@ -266,6 +271,7 @@ impl Optimizer for Pso {
         self.gbest_cost = f64::INFINITY;
         self.update_bests();
         self.iteration = 0;
+        self.r = vec![0; 2 * n * dim];
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
@@ -273,25 +279,29 @@ impl Optimizer for Pso {
         let w = self.params.inertia(self.iteration);
         let (c1, c2) = (self.params.c1, self.params.c2);
         let dim = self.x.dim();
-        for i in 0..self.x.len() {
+        let n = self.x.len();
+        // The iteration's draws, all at once: r1 then r2 for each dimension of each particle,
+        // particle by particle (the order fixes the random stream), as the 64-bit words
+        // `random::<f64>()` would take, turned into the same U(0,1) values in the loop.
+        self.r.resize(2 * n * dim, 0);
+        ctx.rng().fill(&mut self.r[..]);
+        let (lower, upper) = (&ctx.lower()[..dim], &ctx.upper()[..dim]);
+        let (vmax, gbest) = (&self.vmax[..dim], &self.gbest[..dim]);
+        for i in 0..n {
             let x = self.x.row_mut(i);
             let v = &mut self.v[i * dim..(i + 1) * dim];
             let pbest = self.pbest.row(i);
-            for d in 0..dim {
-                // Two draws per dimension, r1 then r2: the order fixes the random stream.
-                let r1: f64 = ctx.rng().random();
-                let r2: f64 = ctx.rng().random();
-                let xi = x[d];
-                let vmax = self.vmax[d];
-                let nv = w * v[d] + c1 * r1 * (pbest[d] - xi) + c2 * r2 * (self.gbest[d] - xi);
-                v[d] = nv.clamp(-vmax, vmax);
-                let mut nx = xi + v[d];
-                let (lo, hi) = (ctx.lower()[d], ctx.upper()[d]);
-                if nx < lo || nx > hi {
-                    nx = nx.clamp(lo, hi);
-                    v[d] = 0.0;
-                }
-                x[d] = nx;
+            let r = &self.r[2 * i * dim..2 * (i + 1) * dim];
+            let others = pbest.iter().zip(gbest).zip(vmax).zip(lower.iter().zip(upper)).zip(r.chunks_exact(2));
+            for ((x, v), ((((&p, &g), &vm), (&lo, &hi)), r)) in x.iter_mut().zip(v.iter_mut()).zip(others) {
+                let (r1, r2, xi) = (unit_f64(r[0]), unit_f64(r[1]), *x);
+                let nv = w * *v + c1 * r1 * (p - xi) + c2 * r2 * (g - xi);
+                let vd = clamp(nv, -vm, vm);
+                let nx = xi + vd;
+                // Absorbing wall: on the bound, with the velocity component zeroed.
+                let outside = (nx < lo) | (nx > hi);
+                *v = if outside { 0.0 } else { vd };
+                *x = clamp(nx, lo, hi);
             }
             ctx.repair(x);
         }
