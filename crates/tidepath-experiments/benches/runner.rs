@@ -17,7 +17,7 @@ const RUNS: u64 = 10;
 
 fn one_run(seed: u64) -> f64 {
     let objective = FunctionObjective::new(Function::Rastrigin, 30, -5.12, 5.12);
-    let mut pso = Pso::new(PsoParams::default());
+    let mut pso = Pso::new(PsoParams::default().checked("pso").unwrap());
     run(&mut pso, &objective, &Termination::evaluations(12_000), &mut run_rng(seed, 0), false, &[], &mut |_| {})
         .best_cost
 }

@@ -23,6 +23,12 @@ use tidepath_io::scenario::{PlanRequest, Scenario};
 pub struct RunBudget {
     pub iterations: Option<u64>,
     pub evaluations: Option<u64>,
+    #[serde(default)]
+    pub expansions: Option<u64>,
+    #[serde(default)]
+    pub samples: Option<u64>,
+    #[serde(default)]
+    pub target_cost: Option<f64>,
     pub population: Option<usize>,
     /// Wall-time safety net (s); runs stopped by it are marked `wall_time`.
     pub time_limit_s: Option<f64>,
@@ -100,6 +106,9 @@ pub fn run_reference(
     // The reference runs with its own defaults, not the compared planners' budget.
     req.iterations = None;
     req.evaluations = None;
+    req.expansions = None;
+    req.samples = None;
+    req.target_cost = None;
     req.population = None;
     let r = scenario.plan(&req, &mut |_| {})?;
     Ok((r.status.is_success() && r.stop_reason != StopReason::Cancelled).then(|| Reference {
@@ -227,12 +236,13 @@ fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
         run: 0,
         iterations: budget.iterations,
         evaluations: budget.evaluations,
+        expansions: budget.expansions,
+        samples: budget.samples,
+        target_cost: budget.target_cost,
         population: budget.population,
         time_limit_s: budget.time_limit_s,
         parallel: false,
-        smoother: None,
-        init: None,
-        stop: None,
+        ..PlanRequest::default()
     }
 }
 

@@ -131,15 +131,15 @@ mod short {
 
 #[test]
 fn a_path_that_stops_short_reports_the_distance_left() {
-    use tidepath::planner::{registry::BuildPlanner, PlannerSettings};
-    use tidepath::registry::{no_params, Entry};
+    use tidepath::planner::{BuildPlanner, Capabilities, PlannerSettings};
+    use tidepath::registry::Entry;
+    let caps = Capabilities { counts: &[], warm_start: false, ..Capabilities::OPTIMIZER };
     let registry = tidepath::planner::registry().with(Entry {
         id: "half-way",
         description: "stops half way",
         citation: "test",
         params: &[],
-        defaults: no_params,
-        build: BuildPlanner::Direct(|_: &PlannerSettings| Ok(Box::new(short::HalfWay))),
+        build: BuildPlanner::direct(caps, |_: &PlannerSettings| Ok(Box::new(short::HalfWay))),
     });
     let s = one_disc();
     let req = PlanRequest { planner: Some("half-way".into()), time_limit_s: Some(1.0), ..PlanRequest::default() };

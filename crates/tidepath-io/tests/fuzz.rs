@@ -246,17 +246,24 @@ fn case(seed: u64, corpus: &[String], dir: &std::path::Path, stats: &mut Stats) 
     let Ok(s) = Scenario::from_toml(&text, "builtin:fuzz") else { return };
     stats.loaded += 1;
     let req = PlanRequest {
-        // Mostly the optimizers (fast); every tenth case a graph or composite planner.
-        planner: if rng.random_range(0..10) == 0 {
-            ["astar", "theta-star", "visibility", "hybrid"].get(rng.random_range(0..4)).map(|p| p.to_string())
-        } else {
-            ["pso", "ga", "de"].get(rng.random_range(0..4)).map(|p| p.to_string())
+        // Mostly the optimizers (fast); every tenth case one of the other planners. Both lists
+        // come from the planner table, plus a case in four left to the scenario's own planner.
+        planner: {
+            let (optimizers, others): (Vec<&tidepath::registry::Entry<tidepath::planner::BuildPlanner>>, Vec<_>) =
+                tidepath::planner::PLANNERS.iter().partition(|e| e.build.is_optimizer());
+            let pool = if rng.random_range(0..10) == 0 { others } else { optimizers };
+            let k = rng.random_range(0..pool.len() + pool.len() / 3 + 1);
+            pool.get(k).map(|e| e.id.to_string())
         },
         seed: rng.random(),
         iterations: Some(rng.random_range(1..4)),
         population: [None, Some(4), Some(8)][rng.random_range(0..3)],
         time_limit_s: Some(0.3),
-        smoother: [None, Some("shortcut".to_string())][rng.random_range(0..2)].clone(),
+        smoother: {
+            let ids: Vec<&str> = tidepath::smoothing::SMOOTHERS.iter().map(|e| e.id).collect();
+            let k = rng.random_range(0..ids.len() * 2);
+            ids.get(k).map(|s| s.to_string())
+        },
         ..PlanRequest::default()
     };
     let Ok(report) = s.plan(&req, &mut |_| {}) else { return };

@@ -6,15 +6,11 @@ mod common;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
+use common::toys;
 use tidepath::geom::Vec3;
-use tidepath::optim::Progress;
-use tidepath::planner::{
-    self, registry::BuildPlanner, Planner, PlannerOutput, PlannerSettings, Problem, RunOptions, SearchStats, Status,
-};
-use tidepath::registry::{no_params, Entry};
-use tidepath::rng::Rng;
-use tidepath::termination::{StopReason, Termination, Usage};
-use tidepath_io::scenario::{PlanRequest, Scenario};
+use tidepath::planner::{self, Status, Unit};
+use tidepath::termination::StopReason;
+use tidepath_io::scenario::{Components, PlanRequest, Scenario};
 
 fn load(name: &str) -> Scenario {
     tidepath_io::scenario::load(name).unwrap()
@@ -28,27 +24,33 @@ fn request(planner: &str, seed: u64) -> PlanRequest {
     PlanRequest { planner: Some(planner.into()), seed, iterations: Some(40), parallel: true, ..PlanRequest::default() }
 }
 
-/// Every registered planner: deterministic for 1 and 4 threads, within its budget, feasible on
-/// the built-in scenarios it applies to (within five seeds) (a planner may decline a world it does not cover, e.g.
-/// `visibility` outside 2-D worlds of discs and boxes, with an input error saying so; each
-/// must plan at least one), re-checked by the independent sampler, and its bad parameters
-/// named `planner.params.ID.FIELD`.
+/// The interface every planner of the table (and the toy registered by this test) must keep:
+/// deterministic for 1 and 4 threads, within its counted budget, plans re-checked by the
+/// independent sampler, each mission with a status, bad parameters named
+/// `planner.params.ID.FIELD`, flags it cannot honour refused naming the flag.
 #[test]
 fn every_registered_planner_meets_the_interface() {
     let pools: Vec<rayon::ThreadPool> =
         [1, 4].iter().map(|&n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap()).collect();
-    for entry in planner::PLANNERS {
+    let components = Components { planners: toys::planners(), ..Components::default() };
+    for entry in components.planners.entries() {
+        let caps = entry.build.caps;
         let mut planned = 0;
         for name in ["demo", "salish", "headland"] {
             let s = load(name);
-            let mut req = request(entry.id, 11);
-            req.iterations = None; // the scenario's own budget
-            let runs: Vec<_> = pools.iter().map(|p| p.install(|| s.plan(&req, &mut |_| {}))).collect();
+            let req =
+                PlanRequest { planner: Some(entry.id.into()), seed: 11, parallel: true, ..PlanRequest::default() };
+            let runs: Vec<_> = pools.iter().map(|p| p.install(|| s.plan_in(&components, &req, &mut |_| {}))).collect();
             let runs: Vec<_> = match runs.into_iter().collect::<Result<Vec<_>, _>>() {
                 Ok(r) => r,
                 Err(e) => {
+                    // A planner may decline a world it does not plan in, and must say why.
                     let e = e.to_string();
-                    assert!(e.contains("needs"), "{} on {name}: {e}", entry.id);
+                    assert!(
+                        !caps.dimensions.covers(s.world.dims) || e.contains("needs"),
+                        "{} on {name}: {e}",
+                        entry.id
+                    );
                     continue;
                 }
             };
@@ -59,46 +61,107 @@ fn every_registered_planner_meets_the_interface() {
                 r
             };
             assert_eq!(strip(&runs[0]), strip(&runs[1]), "{}: 1 and 4 threads differ on {name}", entry.id);
-            // Feasibility is asked on demo and salish; on headland the sliced encodings cannot
-            // turn back (their message is tested with the references). A metaheuristic is not
-            // feasible on every seed (compare measures how often), so a feasible plan is asked
-            // within five seeds.
-            if name != "headland" && !runs[0].status.is_success() {
-                let found = (12..16).any(|seed| {
-                    let r = s.plan(&PlanRequest { seed, ..req.clone() }, &mut |_| {}).unwrap();
-                    common::recheck_plan(&s, &r).unwrap();
-                    r.status.is_success()
-                });
-                assert!(found, "{} infeasible on {name} for seeds 11 to 15: {}", entry.id, runs[0].reason);
-            }
             common::recheck_plan(&s, &runs[0]).unwrap();
-            let limit = s.planner.iterations.unwrap();
-            assert!(runs[0].iterations <= limit, "{}: {} iterations over {limit}", entry.id, runs[0].iterations);
+            for m in &runs[0].missions {
+                assert_eq!(
+                    m.status.is_success(),
+                    m.feasible,
+                    "{}: {} status {} vs feasible",
+                    entry.id,
+                    m.name,
+                    m.status
+                );
+            }
+            if caps.counts_unit(Unit::Iterations) {
+                let limit = s.planner.iterations.unwrap();
+                assert!(runs[0].iterations <= limit, "{}: {} iterations over {limit}", entry.id, runs[0].iterations);
+            }
         }
         assert!(planned > 0, "{} planned none of the built-in scenarios", entry.id);
         let s = load("headland");
-        // An evaluation budget is respected exactly.
-        let mut req = request(entry.id, 3);
-        req.iterations = None;
-        req.evaluations = Some(333);
-        let r = s.plan(&req, &mut |_| {}).unwrap();
-        assert!(r.evaluations <= 333, "{}: {} evaluations", entry.id, r.evaluations);
+        // A limit in each unit it counts is respected; one in a unit it does not is refused.
+        for unit in Unit::ALL {
+            let mut req = PlanRequest { planner: Some(entry.id.into()), seed: 3, ..PlanRequest::default() };
+            let limit = Some(333);
+            match unit {
+                Unit::Iterations => req.iterations = Some(5),
+                Unit::Evaluations => req.evaluations = limit,
+                Unit::Expansions => req.expansions = limit,
+                Unit::Samples => req.samples = limit,
+            }
+            let r = s.plan_in(&components, &req, &mut |_| {});
+            if caps.counts_unit(unit) {
+                let r = r.unwrap();
+                let used = match unit {
+                    Unit::Iterations => r.iterations,
+                    Unit::Evaluations => r.evaluations,
+                    Unit::Expansions => r.expansions,
+                    Unit::Samples => r.samples,
+                };
+                let bound = if unit == Unit::Iterations { 5 } else { 333 };
+                assert!(used <= bound, "{}: {used} {} over {bound}", entry.id, unit.name());
+            } else {
+                let e = r.err().unwrap_or_else(|| panic!("{} accepted a {} limit", entry.id, unit.name())).to_string();
+                assert!(e.starts_with(&format!("--{}: {} counts", unit.name(), entry.id)), "{e}");
+            }
+        }
+        // A warm start it does not use, and a population it does not have, are refused.
+        if !caps.warm_start {
+            let req = PlanRequest {
+                planner: Some(entry.id.into()),
+                init: Some(vec![vec![s.start, s.goal]]),
+                ..PlanRequest::default()
+            };
+            let e = s.plan_in(&components, &req, &mut |_| {}).unwrap_err().to_string();
+            assert!(e.starts_with("--init:"), "{e}");
+        }
+        if !entry.has_param("population") {
+            let req = PlanRequest { planner: Some(entry.id.into()), population: Some(10), ..PlanRequest::default() };
+            let e = s.plan_in(&components, &req, &mut |_| {}).unwrap_err().to_string();
+            assert!(e.starts_with("--population:"), "{e}");
+        }
         // Bad parameters are named with the planner's id.
         let mut table = toml::Table::new();
         table.insert("no_such_field".into(), toml::Value::Integer(1));
-        let e = planner::registry()
+        let e = components
+            .planners
             .build(entry.id, Some(&table), None, &s.encoding)
             .err()
             .unwrap_or_else(|| panic!("{} accepted an unknown parameter", entry.id))
             .to_string();
-        assert!(e.starts_with(&format!("planner.params.{}", entry.id)), "{e}");
-        if (entry.defaults)().contains_key("population") {
-            let e = planner::registry()
+        assert!(e.starts_with(&format!("planner.params.{}.no_such_field", entry.id)), "{e}");
+        if entry.has_param("population") {
+            let e = components
+                .planners
                 .build(entry.id, None, Some(0), &s.encoding)
                 .err()
                 .expect("population 0")
                 .to_string();
             assert!(e.starts_with(&format!("planner.params.{}.population", entry.id)), "{e}");
+        }
+    }
+}
+
+/// The built-in planners' quality on the built-in scenarios: each is feasible on demo and
+/// salish (where it plans) within five seeds. A metaheuristic is not feasible on every seed
+/// (compare measures how often); on headland the sliced encodings cannot turn back (their
+/// message is tested with the references).
+#[test]
+fn every_built_in_planner_is_feasible_on_the_built_in_scenarios() {
+    for entry in planner::PLANNERS {
+        for name in ["demo", "salish"] {
+            let s = load(name);
+            let plan = |seed| {
+                s.plan(&PlanRequest { planner: Some(entry.id.into()), seed, ..PlanRequest::default() }, &mut |_| {})
+            };
+            let Ok(first) = plan(11) else { continue };
+            let found = first.status.is_success()
+                || (12..16).any(|seed| {
+                    let r = plan(seed).unwrap();
+                    common::recheck_plan(&s, &r).unwrap();
+                    r.status.is_success()
+                });
+            assert!(found, "{} infeasible on {name} for seeds 11 to 15: {}", entry.id, first.reason);
         }
     }
 }
@@ -131,66 +194,22 @@ fn a_fleet_gets_one_timed_path_per_mission() {
     }
 }
 
-/// A planner that is not an optimizer: the straight line from start to goal, checked by the
-/// shared motion validator. It needs only the trait and a table line.
-struct StraightLine;
-
-impl Planner for StraightLine {
-    fn id(&self) -> &'static str {
-        "straight"
-    }
-
-    fn plan(
-        &mut self,
-        problem: &Problem<'_>,
-        termination: &Termination,
-        _rng: &mut Rng,
-        _options: RunOptions<'_>,
-        _observer: &mut dyn FnMut(&Progress),
-    ) -> PlannerOutput {
-        let watch = termination.start();
-        let mut stats = SearchStats::default();
-        let mut paths = Vec::new();
-        for i in 0..problem.missions.len() {
-            let model = problem.path_model(i);
-            let m = &problem.missions[i];
-            let check = model.validator.motion(m.start, m.goal, m.departure_time);
-            stats.evaluations += 1;
-            let _valid = check.valid();
-            paths.push(vec![m.start, m.goal]);
-        }
-        stats.stop_reason = watch
-            .stop_reason(Usage { evaluations: stats.evaluations, ..Usage::default() }, 0.0)
-            .unwrap_or(StopReason::Completed);
-        stats.elapsed = watch.elapsed();
-        PlannerOutput { paths, claim: None, stats }
-    }
-}
-
-const STRAIGHT: Entry<BuildPlanner> = Entry {
-    id: "straight",
-    description: "the straight line, if the validator accepts it",
-    citation: "test",
-    params: &[],
-    defaults: no_params,
-    build: BuildPlanner::Direct(|_: &PlannerSettings| Ok(Box::new(StraightLine))),
-};
-
 #[test]
 fn a_toy_planner_needs_only_the_trait_and_a_table_line() {
-    let registry = planner::registry().with(STRAIGHT);
+    let registry = toys::planners();
+    let straight = || PlanRequest { planner: Some("straight".into()), seed: 1, ..PlanRequest::default() };
     assert!(registry.ids().any(|id| id == "straight"));
     let s = load("salish");
-    let r = s.plan_with(&registry, &request("straight", 1), &mut |_| {}).unwrap();
+    let r = s.plan_with(&registry, &straight(), &mut |_| {}).unwrap();
     assert_eq!(r.planner, "straight");
     assert_eq!(r.missions[0].waypoints.len(), 2);
     // The straight line across the strait runs aground: the status says so, with the reason.
     assert_eq!(r.status, Status::Infeasible, "{}", r.reason);
     assert!(r.reason.contains("seabed") || r.reason.contains("segment 0"), "{}", r.reason);
     // Unknown without the table line.
-    assert!(s.plan(&request("straight", 1), &mut |_| {}).unwrap_err().to_string().contains("unknown planner"));
+    assert!(s.plan(&straight(), &mut |_| {}).unwrap_err().to_string().contains("unknown planner"));
     // On a fleet it plans both missions.
-    let r = fleet().plan_with(&registry, &request("straight", 1), &mut |_| {}).unwrap();
+    let r = fleet().plan_with(&registry, &straight(), &mut |_| {}).unwrap();
     assert_eq!(r.missions.len(), 2);
 }
 
@@ -227,7 +246,8 @@ fn a_stop_flag_cancels_a_run() {
 fn a_warm_start_is_never_lost() {
     let s = load("demo");
     let first = s.plan(&request("pso", 2), &mut |_| {}).unwrap();
-    for id in ["pso", "ga", "de"] {
+    let takes_warm_starts = planner::PLANNERS.iter().filter(|e| e.build.caps.warm_start && e.build.is_optimizer());
+    for id in takes_warm_starts.map(|e| e.id) {
         let mut req = request(id, 9);
         req.iterations = Some(1);
         req.init = Some(first.paths());

@@ -5,7 +5,6 @@
 
 mod common;
 
-use tidepath::planner::registry::BuildPlanner;
 use tidepath::planner::PLANNERS;
 use tidepath_io::scenario::{PlanRequest, Scenario};
 
@@ -24,7 +23,7 @@ fn no_disagreement_over_a_thousand_plans_from_every_planner() {
     let mut total = 0;
     for entry in PLANNERS {
         // Graph and composite planners vary little with the seed: a few runs each.
-        let optimizer = matches!(entry.build, BuildPlanner::Optimizer(_));
+        let optimizer = entry.build.is_optimizer();
         let seeds = if optimizer { SEEDS } else { 2 };
         let mut feasible = 0;
         let clock = std::time::Instant::now();
@@ -36,7 +35,8 @@ fn no_disagreement_over_a_thousand_plans_from_every_planner() {
                 let req = PlanRequest {
                     planner: Some(entry.id.into()),
                     seed,
-                    iterations: Some(iterations),
+                    // Short runs where the planner counts iterations.
+                    iterations: entry.build.caps.counts_unit(tidepath::planner::Unit::Iterations).then_some(iterations),
                     smoother,
                     ..PlanRequest::default()
                 };

@@ -259,7 +259,9 @@ fn reachability_never_denies_a_path_the_conservative_search_finds() {
             let problem = s.problem(cost.as_ref());
             let search = tidepath::planner::grid_search::GridSearch::new(
                 "astar",
-                tidepath::planner::grid_search::GridParams { cells: 80, ..Default::default() },
+                tidepath::planner::grid_search::GridParams { cells: Some(80), ..Default::default() }
+                    .checked("t")
+                    .unwrap(),
                 false,
             );
             let out = search.search(&problem, 0, &tidepath::termination::Termination::default(), None).unwrap();

@@ -65,7 +65,7 @@ fn bench(c: &mut Criterion) {
         let settings = ModelSettings { current_step: 250.0, ..ModelSettings::default() };
         let mission = tidepath::mission::Mission::new("m", vehicle.clone(), points[0], points[points.len() - 1], 0.0);
         let model = PathModel::new(&w, &mission, &settings);
-        let cost = GeneralCost::new(GeneralWeights::default()).unwrap();
+        let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
         let mut scratch = Scratch::default();
         c.bench_function(&format!("cost of 40-waypoint path, 20 obstacles, 200x200 grid, {name}"), |b| {
             b.iter(|| cost.cost(&model, black_box(&points), &mut scratch))

@@ -34,7 +34,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use tidepath::optim::functions::{Function, FunctionObjective};
 use tidepath::optim::{run, Objective, Optimizer, Scratch, StopReason, Termination};
-use tidepath::planner::{build_optimizer, registry, BuildPlanner};
+use tidepath::planner::{build_optimizer, registry};
 use tidepath::rng::run_rng;
 
 const EVALUATIONS: u64 = 60_000;
@@ -48,7 +48,7 @@ fn objective() -> FunctionObjective {
 
 /// The ids of every optimizer in the planner registry (pso, ga, de, ...).
 fn optimizer_ids() -> Vec<&'static str> {
-    registry().entries().iter().filter(|e| matches!(e.build, BuildPlanner::Optimizer(_))).map(|e| e.id).collect()
+    registry().entries().iter().filter(|e| e.build.is_optimizer()).map(|e| e.id).collect()
 }
 
 /// The bare loop's points: `EVALUATIONS` rows of `DIM` values, uniform in the box, fixed seed.

@@ -17,6 +17,7 @@ pub mod geo;
 pub mod geom;
 pub mod mission;
 pub mod optim;
+pub mod params;
 pub mod path;
 pub mod planner;
 pub mod raster;

@@ -1,19 +1,11 @@
 //! One registry type for every kind of component (planners, cost models, encodings, smoothers,
 //! built-in scenarios, reproductions), after ruff's rule table: each entry is written once,
-//! with its id, a one-line description, its citation, its parameters with their ranges and a
+//! with its id, a one-line description, its citation, its parameter declarations and a
 //! constructor, and the CLI's lists, `--help`, "known: ..." errors and the generic tests all
 //! read the table. Adding a component is a new file plus one table line.
 
 use crate::error::{Error, Result};
-
-/// One parameter of a component: the scenario key, the accepted range and what it does.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Param {
-    pub name: &'static str,
-    /// The accepted values, as a user reads them ("integer in [2, 100000]", "(0, 1]").
-    pub range: &'static str,
-    pub help: &'static str,
-}
+use crate::params::ParamSpec;
 
 /// One registered component of kind `B` (its constructor's type).
 #[derive(Clone, Copy, Debug)]
@@ -22,20 +14,21 @@ pub struct Entry<B: Copy + 'static> {
     pub description: &'static str,
     /// Where the method comes from (paper citation and reproduction id, or "tidepath").
     pub citation: &'static str,
-    pub params: &'static [Param],
-    /// The parameters' default values, as the TOML table a scenario would write.
-    pub defaults: fn() -> toml::Table,
+    /// Its parameters, each declared once ([`crate::params!`]): ranges, defaults, help.
+    pub params: &'static [ParamSpec],
     pub build: B,
 }
 
-/// An entry's `defaults` when it has no parameters.
-pub fn no_params() -> toml::Table {
-    toml::Table::new()
-}
+impl<B: Copy + 'static> Entry<B> {
+    /// The parameters' defaults, as the TOML table a scenario would write.
+    pub fn defaults(&self) -> toml::Table {
+        self.params.iter().filter_map(|p| (p.default)().map(|v| (p.name.to_string(), v))).collect()
+    }
 
-/// The defaults of a serde parameter struct, as a TOML table.
-pub fn defaults_of<T: serde::Serialize + Default>() -> toml::Table {
-    toml::Table::try_from(T::default()).unwrap_or_default()
+    /// Whether the component has a parameter named `name`.
+    pub fn has_param(&self, name: &str) -> bool {
+        self.params.iter().any(|p| p.name == name)
+    }
 }
 
 /// A table of entries of one kind. Built-in tables are `const` slices; a program (or a test)
@@ -91,8 +84,8 @@ mod tests {
     use super::*;
 
     const E: &[Entry<u8>] = &[
-        Entry { id: "a", description: "", citation: "", params: &[], defaults: no_params, build: 1 },
-        Entry { id: "b", description: "", citation: "", params: &[], defaults: no_params, build: 2 },
+        Entry { id: "a", description: "", citation: "", params: &[], build: 1 },
+        Entry { id: "b", description: "", citation: "", params: &[], build: 2 },
     ];
 
     #[test]
@@ -101,7 +94,7 @@ mod tests {
         assert_eq!(r.get("b").unwrap().build, 2);
         let e = r.get("zz").unwrap_err().to_string();
         assert_eq!(e, "thing.id: unknown thing 'zz' (known: a, b; run `tidepath things`)");
-        let r = r.with(Entry { id: "c", description: "", citation: "", params: &[], defaults: no_params, build: 3 });
+        let r = r.with(Entry { id: "c", description: "", citation: "", params: &[], build: 3 });
         assert_eq!(r.ids().collect::<Vec<_>>(), ["a", "b", "c"]);
     }
 }

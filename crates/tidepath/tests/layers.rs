@@ -25,6 +25,7 @@ const ORDER: &[&str] = &[
     "geom",
     "text",
     "error",
+    "params",
     "geo",
     "config",
     "rng",

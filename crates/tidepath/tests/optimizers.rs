@@ -7,23 +7,26 @@ use tidepath::optim::functions::{Function, FunctionObjective};
 use tidepath::optim::ga::{Ga, GaParams};
 use tidepath::optim::pso::{Pso, PsoParams};
 use tidepath::optim::{run, Objective, Optimizer, RunResult, Scratch, StopReason, Termination as Budget};
+use tidepath::planner::build_optimizer;
 use tidepath::rng::run_rng;
 
-type MakeOptimizer = fn() -> Box<dyn Optimizer>;
+type MakeOptimizer = Box<dyn Fn() -> Box<dyn Optimizer> + Send + Sync>;
 
-/// Every optimizer under test: (name, constructor, bound on Sphere D=10 after 20,000
-/// evaluations). `None`: the bound is a tenth of what random search finds with the same budget
-/// and seed (measured in the test). PSO and DE converge linearly on a convex quadratic: 20,000
-/// evaluations are about 500 generations, so a result above 1e-10 means the search stalled. The
-/// GAs have fixed mutation steps (a Gaussian of 0.1 x range, or 1/D bit flips), which stop
-/// linear convergence near the optimum, so only the random-search bound applies to them.
-fn optimizers() -> Vec<(&'static str, MakeOptimizer, Option<f64>)> {
-    vec![
-        ("pso", || Box::new(Pso::new(PsoParams::default())), Some(1e-10)),
-        ("ga-real", || Box::new(Ga::new(GaParams::wpa2017())), None),
-        ("ga-binary", || Box::new(Ga::new(GaParams::amfa2015())), None),
-        ("de", || Box::new(De::new(DeParams::default())), Some(1e-10)),
-    ]
+/// Every optimizer of the planner table, built with its defaults: a new optimizer is covered
+/// by every check here without editing this file. The quality bound is a tenth of what random
+/// search finds with the same budget and seed (measured in the test); each optimizer's own
+/// file checks its convergence rate.
+fn optimizers() -> Vec<(String, MakeOptimizer)> {
+    tidepath::planner::registry()
+        .entries()
+        .iter()
+        .filter(|e| e.build.is_optimizer())
+        .map(|e| {
+            let id = e.id;
+            let make: MakeOptimizer = Box::new(move || build_optimizer(id, None, None).expect("defaults build"));
+            (id.to_string(), make)
+        })
+        .collect()
 }
 
 /// Best of `n` uniform points in the Sphere box: the level any optimizer must beat.
@@ -46,7 +49,7 @@ fn sphere10() -> FunctionObjective {
     FunctionObjective::new(Function::Sphere, 10, -5.12, 5.12)
 }
 
-fn run_with(make: MakeOptimizer, objective: &dyn Objective, budget: &Budget, seed: u64) -> RunResult {
+fn run_with(make: &MakeOptimizer, objective: &dyn Objective, budget: &Budget, seed: u64) -> RunResult {
     let mut opt = make();
     run(opt.as_mut(), objective, budget, &mut run_rng(seed, 0), true, &[], &mut |_| {})
 }
@@ -63,10 +66,10 @@ fn assert_bitwise_equal(name: &str, what: &str, a: &RunResult, b: &RunResult) {
 fn every_optimizer_solves_sphere_within_exact_budget() {
     const BUDGET: u64 = 20_000;
     let obj = sphere10();
-    for (name, make, bound) in optimizers() {
+    for (name, make) in optimizers() {
         for seed in 0..3 {
-            let r = run_with(make, &obj, &Budget::evaluations(BUDGET), seed);
-            let threshold = bound.unwrap_or_else(|| random_search(&obj, BUDGET, seed) / 10.0);
+            let r = run_with(&make, &obj, &Budget::evaluations(BUDGET), seed);
+            let threshold = random_search(&obj, BUDGET, seed) / 10.0;
             eprintln!(
             "{name}: sphere D=10, {BUDGET} evaluations, seed {seed}: best {:.3e} in {} iterations (bound {threshold:.2e})",
             r.best_cost, r.iterations
@@ -110,15 +113,15 @@ fn results_do_not_depend_on_thread_count() {
     let obj = ParallelHint(FunctionObjective::new(Function::Rastrigin, 8, -5.12, 5.12));
     // An odd budget so the last iteration is cut by the evaluation limit.
     let budget = Budget::evaluations(3_001);
-    for (name, make, _) in optimizers() {
+    for (name, make) in optimizers() {
         let in_pool = |threads: usize| {
             let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
-            pool.install(|| run_with(make, &obj, &budget, 11))
+            pool.install(|| run_with(&make, &obj, &budget, 11))
         };
         let one = in_pool(1);
         assert_eq!(one.evaluations, 3_001, "{name}");
         for threads in [2, 4] {
-            assert_bitwise_equal(name, &format!("1 vs {threads} threads"), &one, &in_pool(threads));
+            assert_bitwise_equal(&name, &format!("1 vs {threads} threads"), &one, &in_pool(threads));
         }
     }
 }
@@ -127,11 +130,11 @@ fn results_do_not_depend_on_thread_count() {
 fn same_seed_repeats_and_different_seeds_differ() {
     let obj = sphere10();
     let budget = Budget::iterations(30);
-    for (name, make, _) in optimizers() {
-        let a = run_with(make, &obj, &budget, 7);
-        let b = run_with(make, &obj, &budget, 7);
-        assert_bitwise_equal(name, "same seed", &a, &b);
-        let c = run_with(make, &obj, &budget, 8);
+    for (name, make) in optimizers() {
+        let a = run_with(&make, &obj, &budget, 7);
+        let b = run_with(&make, &obj, &budget, 7);
+        assert_bitwise_equal(&name, "same seed", &a, &b);
+        let c = run_with(&make, &obj, &budget, 8);
         assert_ne!(a.best_x, c.best_x, "{name}: seeds 7 and 8 give the same best_x");
         assert_ne!(a.history, c.history, "{name}: seeds 7 and 8 give the same history");
     }
@@ -140,9 +143,9 @@ fn same_seed_repeats_and_different_seeds_differ() {
 #[test]
 fn budgets_smaller_than_a_population_are_exact() {
     let obj = sphere10();
-    for (name, make, _) in optimizers() {
+    for (name, make) in optimizers() {
         for budget in [1u64, 7, 45, 97, 131] {
-            let r = run_with(make, &obj, &Budget::evaluations(budget), 3);
+            let r = run_with(&make, &obj, &Budget::evaluations(budget), 3);
             assert_eq!(r.evaluations, budget, "{name}: budget {budget}");
             assert!(r.best_cost.is_finite(), "{name}: budget {budget}");
             assert!(r.history.iter().all(|h| !h.is_nan()), "{name}: NaN in history");
@@ -159,18 +162,22 @@ fn budgets_smaller_than_a_population_are_exact() {
 fn seeded_results_are_pinned() {
     type Make = fn() -> Box<dyn Optimizer>;
     let variants: [(&str, Make, u64); 8] = [
-        ("pso", || Box::new(Pso::new(PsoParams::default())), 0xeaaa8a11372b291d),
-        ("pso-wpa2017", || Box::new(Pso::new(PsoParams::wpa2017())), 0xe331d83d84189af0),
-        ("pso-ijs2023", || Box::new(Pso::new(PsoParams::ijs2023(50))), 0xb1041bd91e3585d8),
-        ("ga-real", || Box::new(Ga::new(GaParams::wpa2017())), 0x3fce3d6e0c24a1f4),
+        ("pso", || Box::new(Pso::new(PsoParams::default().checked("t").unwrap())), 0xeaaa8a11372b291d),
+        ("pso-wpa2017", || Box::new(Pso::new(PsoParams::wpa2017().checked("t").unwrap())), 0xe331d83d84189af0),
+        ("pso-ijs2023", || Box::new(Pso::new(PsoParams::ijs2023(50).checked("t").unwrap())), 0xb1041bd91e3585d8),
+        ("ga-real", || Box::new(Ga::new(GaParams::wpa2017().checked("t").unwrap())), 0x3fce3d6e0c24a1f4),
         (
             "ga-real, 7 individuals, 2 elites",
-            || Box::new(Ga::new(GaParams { population: 7, elitism: 2, ..GaParams::wpa2017() })),
+            || Box::new(Ga::new(GaParams { population: 7, elitism: 2, ..GaParams::wpa2017() }.checked("t").unwrap())),
             0xf26a1ed321d9a556,
         ),
-        ("ga-binary", || Box::new(Ga::new(GaParams::amfa2015())), 0xd5a20ef5acf9c8e1),
-        ("de", || Box::new(De::new(DeParams::default())), 0xc4d89ec68a0fe8ec),
-        ("de, 5 individuals", || Box::new(De::new(DeParams { population: 5, f: 0.9, cr: 0.2 })), 0x0749081246113904),
+        ("ga-binary", || Box::new(Ga::new(GaParams::amfa2015().checked("t").unwrap())), 0xd5a20ef5acf9c8e1),
+        ("de", || Box::new(De::new(DeParams::default().checked("t").unwrap())), 0xc4d89ec68a0fe8ec),
+        (
+            "de, 5 individuals",
+            || Box::new(De::new(DeParams { population: 5, f: 0.9, cr: 0.2 }.checked("t").unwrap())),
+            0x0749081246113904,
+        ),
     ];
     for (name, make, expected) in variants {
         // FNV-1a over 64-bit words.

@@ -56,6 +56,9 @@ pub struct FunctionsArgs {
     /// Evaluations per run.
     #[arg(long, default_value_t = 60_000)]
     pub evaluations: u64,
+    /// Wall-time limit per run in seconds (a safety net).
+    #[arg(long)]
+    pub time_limit: Option<f64>,
     /// Runs per pair.
     #[arg(long, default_value_t = 30)]
     pub runs: u64,
@@ -128,10 +131,10 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
         tidepath::optim::check_memory(opt.population(), largest)?;
     }
     let budget = RunBudget {
-        iterations: None,
         evaluations: Some(args.evaluations),
         population: args.population,
-        time_limit_s: None,
+        time_limit_s: args.time_limit,
+        ..RunBudget::default()
     };
     tidepath_experiments::compare::check_runs(args.runs)?;
     tidepath::termination::check_count("--evaluations", args.evaluations)?;

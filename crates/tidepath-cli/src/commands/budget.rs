@@ -1,4 +1,5 @@
 //! Flags that `plan` and `compare` share, declared once so they read the same everywhere.
+//! A limit in a unit a planner does not count is refused for that planner, naming the flag.
 
 use clap::Args;
 
@@ -13,10 +14,56 @@ pub struct BudgetArgs {
     /// Evaluation budget per run (overrides the scenario).
     #[arg(long)]
     pub evaluations: Option<u64>,
+    /// Node expansions per run, for graph planners (overrides the scenario).
+    #[arg(long)]
+    pub expansions: Option<u64>,
+    /// Samples per run, for sampling planners (overrides the scenario).
+    #[arg(long)]
+    pub samples: Option<u64>,
+    /// Stop a run once its best cost is at most this (overrides the scenario).
+    #[arg(long, allow_hyphen_values = true)]
+    pub target_cost: Option<f64>,
     /// Population size (overrides the planners' parameters).
     #[arg(long)]
     pub population: Option<usize>,
     /// Worker threads (default: all cores). Results do not depend on it.
     #[arg(long)]
     pub jobs: Option<usize>,
+}
+
+impl BudgetArgs {
+    /// These limits as an experiment's budget, with `time_limit_s`.
+    pub fn budget(&self, time_limit_s: Option<f64>) -> tidepath_experiments::compare::RunBudget {
+        tidepath_experiments::compare::RunBudget {
+            iterations: self.iterations,
+            evaluations: self.evaluations,
+            expansions: self.expansions,
+            samples: self.samples,
+            target_cost: self.target_cost,
+            population: self.population,
+            time_limit_s,
+        }
+    }
+}
+
+/// Parses `--smooth ID[:KEY=VALUE,...]` into the smoother id and its parameter table (values
+/// as TOML would read them: `passes=3`, `radius=25.5`, `mode="fast"`).
+pub fn parse_smooth(text: &str) -> Result<(String, Option<toml::Table>), tidepath::Error> {
+    let Some((id, rest)) = text.split_once(':') else {
+        return Ok((text.to_string(), None));
+    };
+    let mut table = toml::Table::new();
+    for pair in rest.split(',').filter(|p| !p.trim().is_empty()) {
+        let (k, v) = pair.split_once('=').ok_or_else(|| {
+            tidepath::Error::input("--smooth", format!("`{pair}` is not KEY=VALUE (e.g. --smooth shortcut:passes=3)"))
+        })?;
+        let parsed: toml::Table = toml::from_str(&format!("v = {}", v.trim())).map_err(|_| {
+            tidepath::Error::input(
+                "--smooth",
+                format!("`{}` is not a value (a number, true/false or \"text\")", v.trim()),
+            )
+        })?;
+        table.insert(k.trim().to_string(), parsed["v"].clone());
+    }
+    Ok((id.to_string(), Some(table)))
 }

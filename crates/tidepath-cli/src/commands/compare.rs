@@ -25,6 +25,9 @@ pub struct CompareArgs {
     pub runs: u64,
     #[command(flatten)]
     pub run: super::budget::BudgetArgs,
+    /// Wall-time limit per run in seconds (a safety net: runs it stops depend on the machine).
+    #[arg(long)]
+    pub time_limit: Option<f64>,
     /// Write results.json, runs.csv, table.md, convergence.svg, boxplot.svg and paths.svg here.
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -41,12 +44,7 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
     let jobs = crate::jobs(args.run.jobs)?;
     tidepath_experiments::compare::check_runs(args.runs)?;
-    let budget = RunBudget {
-        iterations: args.run.iterations,
-        evaluations: args.run.evaluations,
-        population: args.run.population,
-        time_limit_s: None,
-    };
+    let budget = args.run.budget(args.time_limit);
     let reference = match args.reference.as_deref() {
         Some("none") => None,
         Some(id) => Some(id.to_string()),
@@ -58,7 +56,7 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
         scenario.check_request(&request(&budget, p))?;
     }
     if let Some(id) = &reference {
-        let r = RunBudget { iterations: None, evaluations: None, population: None, ..budget.clone() };
+        let r = RunBudget { time_limit_s: budget.time_limit_s, ..RunBudget::default() };
         scenario.check_request(&request(&r, id)).map_err(|e| e.for_field("--reference"))?;
     }
     let figures = tidepath_plot::ExperimentFigures;
@@ -120,6 +118,9 @@ fn request(budget: &RunBudget, planner: &str) -> PlanRequest {
         planner: Some(planner.to_string()),
         iterations: budget.iterations,
         evaluations: budget.evaluations,
+        expansions: budget.expansions,
+        samples: budget.samples,
+        target_cost: budget.target_cost,
         population: budget.population,
         time_limit_s: budget.time_limit_s,
         ..PlanRequest::default()

@@ -24,7 +24,8 @@ pub struct PlanArgs {
     /// the machine.
     #[arg(long)]
     pub time_limit: Option<f64>,
-    /// Smooth the plan (`shortcut`, or `none` to override the scenario's smoother).
+    /// Smooth the plan: a smoother id with optional parameters, `ID[:KEY=VALUE,...]` (e.g.
+    /// `shortcut:passes=3`), or `none` to override the scenario's smoother.
     #[arg(long)]
     pub smooth: Option<String>,
     /// Start from this plan JSON (a warm start): optimizers seed part of their population with
@@ -75,23 +76,35 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         Some(path) => Some(PlanFile::read(path)?.mission_paths()),
         None => None,
     };
+    let (smoother, smoother_params) = match args.smooth.as_deref().map(super::budget::parse_smooth).transpose()? {
+        Some((id, params)) => (Some(id), params),
+        None => (None, None),
+    };
     let req = PlanRequest {
         planner: args.planner.clone(),
         seed: args.run.seed,
         run: 0,
         iterations: args.run.iterations,
         evaluations: args.run.evaluations,
+        expansions: args.run.expansions,
+        samples: args.run.samples,
+        target_cost: args.run.target_cost,
         population: args.run.population,
         time_limit_s: args.time_limit,
         parallel: true,
-        smoother: args.smooth.clone(),
+        smoother,
+        smoother_params,
         init,
         stop: Some(crate::stop_flag()),
     };
     scenario.check_request(&req)?;
-    let reference_req = args.reference.as_ref().map(|id| {
-        let r = PlanRequest { planner: Some(id.clone()), seed: args.run.seed, init: None, ..req.clone() };
-        PlanRequest { iterations: None, evaluations: None, population: None, smoother: None, ..r }
+    let reference_req = args.reference.as_ref().map(|id| PlanRequest {
+        planner: Some(id.clone()),
+        seed: args.run.seed,
+        time_limit_s: args.time_limit,
+        parallel: true,
+        stop: req.stop.clone(),
+        ..PlanRequest::default()
     });
     if let Some(r) = &reference_req {
         scenario.check_request(r).map_err(|e| e.for_field("--reference"))?;

@@ -24,20 +24,29 @@ fn section<B: Copy>(title: &str, r: &Registry<B>, params: bool) {
 fn print_entry<B: Copy>(e: &Entry<B>, params: bool) {
     println!("  {:<10} {} [{}]", e.id, e.description, e.citation);
     if params {
-        let defaults = (e.defaults)();
-        for p in e.params {
-            let d = defaults.get(p.name).map_or("none".to_string(), |v| v.to_string());
-            println!("      {:<22} {} (default {d}; {})", p.name, p.help, p.range);
-        }
+        print_params(e);
+    }
+}
+
+/// Each parameter once: its range, its default and where it comes from, all read from its
+/// one declaration.
+fn print_params<B: Copy>(e: &Entry<B>) {
+    for p in e.params {
+        println!("      {:<22} {}", p.name, p.help());
+        println!("      {:<22} {}; default {}; from {}", "", p.range, p.default_text(), p.source);
     }
 }
 
 pub fn list(args: &PlannersArgs) -> Result<Outcome, Error> {
-    section(
-        "Planners (plan --planner ID; parameters in [planner.params.ID])",
-        &tidepath::planner::registry(),
-        args.params,
-    );
+    println!("Planners (plan --planner ID; parameters in [planner.params.ID]):");
+    for e in tidepath::planner::registry().entries() {
+        println!("  {:<10} {} [{}]", e.id, e.description, e.citation);
+        println!("  {:<10} can: {}", "", e.build.caps);
+        if args.params {
+            print_params(e);
+        }
+    }
+    println!();
     section("Encodings ([encoding] kind = \"ID\")", &tidepath::encoding::registry(), args.params);
     section(
         "Cost models ([cost] model = \"ID\"; parameters in [cost.weights])",
@@ -45,7 +54,7 @@ pub fn list(args: &PlannersArgs) -> Result<Outcome, Error> {
         args.params,
     );
     section(
-        "Smoothers (plan --smooth ID, or [planner] smoother = \"ID\")",
+        "Smoothers (plan --smooth ID[:KEY=VALUE,...], or [planner] smoother = \"ID\" with [planner.smoother_params.ID])",
         &tidepath::smoothing::registry(),
         args.params,
     );

@@ -18,6 +18,9 @@ pub struct ReproduceArgs {
     /// Master seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// Wall-time limit per run in seconds (a safety net: runs it stops depend on the machine).
+    #[arg(long)]
+    pub time_limit: Option<f64>,
     /// Parallel runs (default: all cores). Results do not depend on it.
     #[arg(long)]
     pub jobs: Option<usize>,
@@ -43,6 +46,9 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
         tidepath::planner::registry().get(id).map_err(|e| e.for_field("--reference"))?;
     }
     tidepath_experiments::reproduce::check_runs(args.runs)?;
+    if let Some(t) = args.time_limit {
+        tidepath::termination::check_wall_time("--time-limit", t)?;
+    }
     let figures = tidepath_plot::ExperimentFigures;
     let mut outputs = Outputs::new();
     outputs.declare_in("--out", &args.out, REPORT_FILE)?;
@@ -52,6 +58,7 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
         jobs: crate::jobs(args.jobs)?,
         reference: args.reference.clone(),
         stop: Some(crate::stop_flag()),
+        time_limit_s: args.time_limit,
     };
     let bar = std::sync::Mutex::new(None::<RunsBar>);
     let outcomes = reproduce(

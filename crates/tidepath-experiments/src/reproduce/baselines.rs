@@ -67,16 +67,16 @@ const TABLE4_GA: Rows = [
 /// roulette, single-point crossover pc = 0.6, pm = 1/n per bit (docs/papers/shared.md#ga); DE/rand/1/bin
 /// F = 0.5, CR = 0.9 (ours, not in the paper). Population 40 for all.
 fn factory(id: &str) -> Result<Box<dyn Optimizer>> {
+    let prefix = format!("baselines.{id}");
     Ok(match id {
-        "pso" => Box::new(Pso::new(PsoParams { population: POPULATION, ..PsoParams::amfa2015() })),
-        "ga" => Box::new(Ga::new(GaParams { population: POPULATION, ..GaParams::amfa2015() })),
+        "pso" => Box::new(Pso::new(PsoParams { population: POPULATION, ..PsoParams::amfa2015() }.checked(&prefix)?)),
+        "ga" => Box::new(Ga::new(GaParams { population: POPULATION, ..GaParams::amfa2015() }.checked(&prefix)?)),
         // The other reading of the paper's "pm = 1/n": once per chromosome of D x 20 bits.
-        GA_PER_CHROMOSOME => Box::new(Ga::new(GaParams {
-            population: POPULATION,
-            mutation_rate: Some(1.0 / (DIM as f64 * 20.0)),
-            ..GaParams::amfa2015()
-        })),
-        "de" => Box::new(De::new(DeParams { population: POPULATION, ..DeParams::default() })),
+        GA_PER_CHROMOSOME => Box::new(Ga::new(
+            GaParams { population: POPULATION, mutation_rate: Some(1.0 / (DIM as f64 * 20.0)), ..GaParams::amfa2015() }
+                .checked(&prefix)?,
+        )),
+        "de" => Box::new(De::new(DeParams { population: POPULATION, ..DeParams::default() }.checked(&prefix)?)),
         other => return Err(tidepath::error::Error::input("planner", format!("baselines has no planner '{other}'"))),
     })
 }
@@ -117,7 +117,12 @@ fn claims(labels: &[String], pso: &Rows, ga: &Rows, range: &str) -> Vec<Claim> {
 
 pub(super) fn run(opts: &ReproduceOptions, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<ExperimentOutcome>> {
     let planners: Vec<String> = ["pso", "ga", GA_PER_CHROMOSOME, "de"].iter().map(|s| s.to_string()).collect();
-    let budget = RunBudget { evaluations: Some(EVALUATIONS), population: Some(POPULATION), ..RunBudget::default() };
+    let budget = RunBudget {
+        evaluations: Some(EVALUATIONS),
+        population: Some(POPULATION),
+        time_limit_s: opts.time_limit_s,
+        ..RunBudget::default()
+    };
     let mut outcomes = Vec::new();
     let experiments = [
         ("table2-small", "Table 2: small ranges", "small", "amfa2015, Table 2", &TABLE2_PSO, &TABLE2_GA),

@@ -14,7 +14,7 @@ use std::path::Path;
 
 use super::compare::Comparison;
 use tidepath::error::{Error, Result};
-use tidepath::registry::{no_params, Entry, Registry};
+use tidepath::registry::{Entry, Registry};
 use tidepath_io::Outputs;
 
 /// Options shared by every reproduction.
@@ -29,6 +29,8 @@ pub struct ReproduceOptions {
     /// The caller's stop flag (Ctrl-C): experiments not started are left out, and the report
     /// says the reproduction is incomplete.
     pub stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
+    /// Wall-time limit per run (s), a safety net; `None`: the default cap.
+    pub time_limit_s: Option<f64>,
 }
 
 impl ReproduceOptions {
@@ -73,7 +75,6 @@ pub const PAPERS: &[Paper] = &[Entry {
         "PSO and GA (DE and a second GA reading for reference) on amfa2015's benchmark functions, Tables 2 and 4",
     citation: "Liu et al. 2015 (amfa2015), Tables 1-4",
     params: &[],
-    defaults: no_params,
     build: baselines::run,
 }];
 

@@ -212,7 +212,8 @@ mod tests {
     fn scenario_experiments_report_the_gap_to_their_reference() {
         use crate::compare::{compare_scenario, RunBudget};
         let scenario = tidepath_io::scenario::load("headland").unwrap();
-        let opts = ReproduceOptions { runs: 2, master_seed: 3, jobs: 1, reference: None, stop: None };
+        let opts =
+            ReproduceOptions { runs: 2, master_seed: 3, jobs: 1, reference: None, stop: None, time_limit_s: None };
         assert_eq!(opts.reference_for(&scenario).as_deref(), Some("visibility"));
         let none = ReproduceOptions { reference: Some("none".into()), ..opts.clone() };
         assert_eq!(none.reference_for(&scenario), None);
@@ -237,14 +238,7 @@ mod tests {
             claims: Vec::new(),
             notes: Vec::new(),
         };
-        let paper = Paper {
-            id: "test",
-            description: "test",
-            citation: "",
-            params: &[],
-            defaults: tidepath::registry::no_params,
-            build: |_, _| Ok(Vec::new()),
-        };
+        let paper = Paper { id: "test", description: "test", citation: "", params: &[], build: |_, _| Ok(Vec::new()) };
         let dir = tempfile::tempdir().unwrap();
         let write = |o: ExperimentOutcome| {
             let mut out = Outputs::new();

@@ -96,9 +96,19 @@ impl Scenario {
         };
         // Build once so configuration errors surface at load time, not mid-run.
         let p = &scenario.planner;
-        for (name, v) in [("planner.iterations", p.iterations), ("planner.evaluations", p.evaluations)] {
+        for (name, v) in [
+            ("planner.iterations", p.iterations),
+            ("planner.evaluations", p.evaluations),
+            ("planner.expansions", p.expansions),
+            ("planner.samples", p.samples),
+        ] {
             if let Some(v) = v {
                 tidepath::termination::check_count(name, v)?;
+            }
+        }
+        if let Some(t) = p.target_cost {
+            if !t.is_finite() {
+                return Err(Error::input("planner.target_cost", format!("must be finite, got {t}")));
             }
         }
         if let Some(t) = p.time_limit_s {
@@ -108,12 +118,18 @@ impl Scenario {
         scenario.build_encoding()?;
         let planner = &scenario.planner;
         let registry = tidepath::planner::registry();
-        registry.build(&planner.id, planner.params.get(&planner.id), planner.population, &scenario.encoding)?;
+        // The scenario's population applies to planners that have one.
+        let population =
+            |id: &str| planner.population.filter(|_| registry.get(id).is_ok_and(|e| e.has_param("population")));
+        registry.build(&planner.id, planner.params.get(&planner.id), population(&planner.id), &scenario.encoding)?;
         for (id, table) in &planner.params {
-            registry.build(id, Some(table), planner.population, &scenario.encoding)?;
+            registry.build(id, Some(table), population(id), &scenario.encoding)?;
         }
         if let Some(id) = planner.smoother.as_deref().filter(|s| *s != "none") {
-            tidepath::smoothing::build_smoother(id)?;
+            tidepath::smoothing::build_smoother(id, planner.smoother_params.get(id))?;
+        }
+        for (id, table) in &planner.smoother_params {
+            tidepath::smoothing::build_smoother(id, Some(table))?;
         }
         Ok(scenario)
     }
@@ -147,10 +163,7 @@ impl Scenario {
     /// The `[encoding]` of the first mission (every mission's is checked by the planners).
     pub fn build_encoding(&self) -> Result<Box<dyn Encoding>> {
         let build = encoding::registry().get(&self.encoding.kind)?.build;
-        let n = self.encoding.waypoints;
-        if n > MAX_WAYPOINTS {
-            return Err(Error::input("encoding.waypoints", format!("must be at most {MAX_WAYPOINTS}, got {n}")));
-        }
+        let n = self.encoding.checked()?.waypoints;
         build(&EncodingArgs {
             start: self.start,
             goal: self.goal,
@@ -164,8 +177,8 @@ impl Scenario {
 /// Largest coordinate (m) a domain may have.
 pub const MAX_COORDINATE: f64 = 1e8;
 
-/// Most interior waypoints an encoding may have.
-pub const MAX_WAYPOINTS: usize = 10_000;
+#[allow(unused_imports)]
+pub use tidepath::encoding::MAX_WAYPOINTS;
 
 fn build_missions(
     spec: &ScenarioSpec,

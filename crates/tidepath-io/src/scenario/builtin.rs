@@ -1,7 +1,7 @@
 //! Scenarios embedded in the binary, so a newcomer can plan without writing a file. One table
 //! entry each: the id, a line, the source of its data, and the TOML text.
 
-use tidepath::registry::{no_params, Entry, Registry};
+use tidepath::registry::{Entry, Registry};
 
 pub const BUILTIN: &[Entry<&str>] = &[
     Entry {
@@ -10,7 +10,6 @@ pub const BUILTIN: &[Entry<&str>] = &[
             "3-D AUV transit over seamounts, past a moving sphere, a wreck and an exclusion zone, through three eddies",
         citation: "tidepath (synthetic)",
         params: &[],
-        defaults: no_params,
         build: include_str!("../../scenarios/demo.toml"),
     },
     Entry {
@@ -18,7 +17,6 @@ pub const BUILTIN: &[Entry<&str>] = &[
         description: "2-D surface transit up the Strait of Juan de Fuca on a real elevation grid, with a flood tide",
         citation: "elevation: matplotlib's topobathy sample (Strait of Juan de Fuca)",
         params: &[],
-        defaults: no_params,
         build: include_str!("../../scenarios/salish.toml"),
     },
     Entry {
@@ -27,7 +25,6 @@ pub const BUILTIN: &[Entry<&str>] = &[
             "3-D AUV transit from west of Cape Flattery to Haro Strait on the real seabed, at least 20 m above it",
         citation: "elevation: matplotlib's topobathy sample (Strait of Juan de Fuca)",
         params: &[],
-        defaults: no_params,
         build: include_str!("../../scenarios/salish-strait.toml"),
     },
     Entry {
@@ -37,7 +34,6 @@ pub const BUILTIN: &[Entry<&str>] = &[
         citation:
             "elevation: matplotlib's topobathy sample; currents: synthetic M2 tide (scripts/make_salish_forecast.py)",
         params: &[],
-        defaults: no_params,
         build: include_str!("../../scenarios/salish-forecast.toml"),
     },
     Entry {
@@ -45,7 +41,6 @@ pub const BUILTIN: &[Entry<&str>] = &[
         description: "2-D surface transit to a goal in a bay that opens away from the start: the route must turn back",
         citation: "tidepath (synthetic)",
         params: &[],
-        defaults: no_params,
         build: include_str!("../../scenarios/headland.toml"),
     },
 ];

@@ -14,7 +14,7 @@ pub mod spec;
 
 pub use build::Scenario;
 pub use builtin::{builtin, builtin_names, registry, BUILTIN};
-pub use plan::{default_time_limit_s, LimitSource, PlanRequest, DEFAULT_TIME_LIMIT_S};
+pub use plan::{default_time_limit_s, Components, LimitSource, PlanRequest, DEFAULT_TIME_LIMIT_S};
 pub use spec::ScenarioSpec;
 
 pub use tidepath::config::{from_value, parse_toml};

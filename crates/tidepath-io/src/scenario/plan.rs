@@ -9,10 +9,12 @@ use crate::{PlanAbout, PlanReport};
 use tidepath::error::{Error, Result};
 use tidepath::geom::Vec3;
 use tidepath::optim::Progress;
+use tidepath::planner::Unit;
 use tidepath::planner::{self, registry::BuildPlanner, MissionPlan, RunOptions, SolveOptions};
+use tidepath::registry::Entry;
 use tidepath::registry::Registry;
 use tidepath::rng::run_rng;
-use tidepath::smoothing::build_smoother;
+use tidepath::smoothing::{build_smoother_with, BuildSmoother};
 use tidepath::termination::{check_count, check_wall_time, Termination};
 
 /// The wall-time cap (s) every run gets when neither the command line nor the scenario sets a
@@ -47,16 +49,37 @@ pub struct PlanRequest {
     pub run: u64,
     pub iterations: Option<u64>,
     pub evaluations: Option<u64>,
+    pub expansions: Option<u64>,
+    pub samples: Option<u64>,
+    /// Stop once the best cost is at most this.
+    pub target_cost: Option<f64>,
     pub population: Option<usize>,
     pub time_limit_s: Option<f64>,
     /// Evaluate populations on the rayon pool (results are identical either way).
     pub parallel: bool,
     /// Smoother id; `None` uses the scenario's `[planner] smoother`, `Some("none")` disables it.
     pub smoother: Option<String>,
+    /// The smoother's parameters (`--smooth ID:KEY=VALUE,...`); `None`: the scenario's
+    /// `[planner.smoother_params.ID]`, else its defaults.
+    pub smoother_params: Option<toml::Table>,
     /// A path per mission to start from (`plan --init`).
     pub init: Option<Vec<Vec<Vec3>>>,
     /// Raised by the caller to stop the run (Ctrl-C).
     pub stop: Option<Arc<AtomicBool>>,
+}
+
+/// The component tables a plan draws on: the built-in planners and smoothers by default; a
+/// program or a test extends them with its own.
+#[derive(Clone, Debug)]
+pub struct Components {
+    pub planners: Registry<BuildPlanner>,
+    pub smoothers: Registry<BuildSmoother>,
+}
+
+impl Default for Components {
+    fn default() -> Self {
+        Self { planners: planner::registry(), smoothers: tidepath::smoothing::registry() }
+    }
 }
 
 /// A run's pieces, built from a request.
@@ -77,31 +100,95 @@ pub enum LimitSource {
 }
 
 impl Scenario {
-    /// The termination for a request: explicit limits win; with none given, the scenario's;
-    /// with no wall time anywhere, the default cap. Every value is checked and an error names
-    /// the flag or field it came from.
+    /// The termination for a request: limits given on the command line win; with none given,
+    /// the scenario's; with no wall time anywhere, the default cap. Every value is checked and
+    /// an error names the flag or field it came from. `counts` keeps only the count limits of
+    /// the units a planner counts (all when `None`): a scenario's `iterations` is a default
+    /// for whichever planner runs, and means nothing to one that counts expansions.
     pub fn termination(&self, req: &PlanRequest) -> Result<(Termination, LimitSource)> {
-        let explicit = req.iterations.is_some() || req.evaluations.is_some();
-        let (iters, evals) = if explicit {
-            (req.iterations, req.evaluations)
+        self.termination_for(req, None)
+    }
+
+    fn termination_for(&self, req: &PlanRequest, counts: Option<&[Unit]>) -> Result<(Termination, LimitSource)> {
+        let explicit = req.iterations.is_some()
+            || req.evaluations.is_some()
+            || req.expansions.is_some()
+            || req.samples.is_some()
+            || req.target_cost.is_some();
+        let p = &self.planner;
+        let (limits, target, source) = if explicit {
+            ([req.iterations, req.evaluations, req.expansions, req.samples], req.target_cost, "--")
         } else {
-            (self.planner.iterations, self.planner.evaluations)
+            ([p.iterations, p.evaluations, p.expansions, p.samples], p.target_cost, "planner.")
         };
-        let source = if explicit { "--" } else { "planner." };
-        let count = |name: &str, v: Option<u64>| v.map(|v| check_count(&format!("{source}{name}"), v)).transpose();
-        let (time, limit_source) = match (req.time_limit_s, self.planner.time_limit_s) {
+        let mut checked = [None; 4];
+        for (k, unit) in Unit::ALL.iter().enumerate() {
+            if let Some(v) = limits[k] {
+                let v = check_count(&format!("{source}{}", unit.name()), v)?;
+                if counts.is_none_or(|c| c.contains(unit)) {
+                    checked[k] = Some(v);
+                }
+            }
+        }
+        if let Some(t) = target {
+            if !t.is_finite() {
+                let field = if explicit { "--target-cost" } else { "planner.target_cost" };
+                return Err(Error::input(field, format!("must be finite, got {t}")));
+            }
+        }
+        let (time, limit_source) = match (req.time_limit_s, p.time_limit_s) {
             (Some(t), _) => (check_wall_time("--time-limit", t)?, LimitSource::CommandLine),
             (None, Some(t)) => (check_wall_time("planner.time_limit_s", t)?, LimitSource::Scenario),
             (None, None) => (check_wall_time("default time limit", default_time_limit_s()?)?, LimitSource::DefaultCap),
         };
-        let mut t = Termination {
-            max_iterations: count("iterations", iters)?,
-            max_evaluations: count("evaluations", evals)?,
+        let t = Termination {
+            max_iterations: checked[0],
+            max_evaluations: checked[1],
+            max_expansions: checked[2],
+            max_samples: checked[3],
+            target_cost: target,
             wall_time: Some(time),
+            stop: req.stop.clone(),
             ..Termination::default()
         };
-        t.stop = req.stop.clone();
         Ok((t, limit_source))
+    }
+
+    /// Refuses, naming the flag, what planner `id` cannot honour: a count in a unit it does not
+    /// count, a population it does not have, a warm start it does not use, a world it does not
+    /// plan in.
+    fn check_capabilities(&self, entry: &Entry<BuildPlanner>, req: &PlanRequest) -> Result<()> {
+        let caps = &entry.build.caps;
+        let id = entry.id;
+        let flags = [req.iterations, req.evaluations, req.expansions, req.samples];
+        for (unit, v) in Unit::ALL.iter().zip(flags) {
+            if v.is_some() && !caps.counts_unit(*unit) {
+                let hint = match caps.counts.first() {
+                    Some(u) => format!("; use --{}", u.name()),
+                    None => "; it runs to completion (use --time-limit to bound it)".into(),
+                };
+                return Err(Error::input(
+                    format!("--{}", unit.name()),
+                    format!("{id} counts {}{hint}", caps.counts_text()),
+                ));
+            }
+        }
+        if req.target_cost.is_some() && caps.counts.is_empty() {
+            return Err(Error::input(
+                "--target-cost",
+                format!("{id} runs to completion; a target cost cannot stop it"),
+            ));
+        }
+        if req.population.is_some() && !entry.has_param("population") {
+            return Err(Error::input("--population", format!("{id} has no population")));
+        }
+        if req.init.is_some() && !caps.warm_start {
+            return Err(Error::input("--init", format!("{id} takes no warm start")));
+        }
+        if !caps.dimensions.covers(self.world.dims) {
+            return Err(Error::input("planner", format!("{id} plans 2-D worlds only; use theta-star or hybrid")));
+        }
+        Ok(())
     }
 
     /// Runs one plan with the built-in planners and judges the result.
@@ -119,21 +206,33 @@ impl Scenario {
 
     /// [`Scenario::check_request`] against `planners`.
     pub fn check_request_with(&self, planners: &Registry<BuildPlanner>, req: &PlanRequest) -> Result<()> {
-        let prepared = self.prepare(planners, req)?;
+        self.check_request_in(&Components { planners: planners.clone(), ..Components::default() }, req)
+    }
+
+    /// [`Scenario::check_request`] against the component tables `c`.
+    pub fn check_request_in(&self, c: &Components, req: &PlanRequest) -> Result<()> {
+        let prepared = self.prepare(c, req)?;
         let problem = self.problem(prepared.cost.as_ref());
         prepared.planner.check(&problem)
     }
 
     /// Everything a run needs, built and checked.
-    fn prepare(&self, planners: &Registry<BuildPlanner>, req: &PlanRequest) -> Result<Prepared> {
+    fn prepare(&self, c: &Components, req: &PlanRequest) -> Result<Prepared> {
+        let planners = &c.planners;
         let id = req.planner.clone().unwrap_or_else(|| self.planner.id.clone());
-        let population = req.population.or(self.planner.population);
+        let entry = *planners.get(&id)?;
+        self.check_capabilities(&entry, req)?;
+        // The scenario's population is a default for planners that have one.
+        let population = req.population.or(self.planner.population.filter(|_| entry.has_param("population")));
         let planner = planners.build(&id, self.planner.params.get(&id), population, &self.encoding)?;
-        let (termination, limit_source) = self.termination(req)?;
+        let (termination, limit_source) = self.termination_for(req, Some(entry.build.caps.counts))?;
         let cost = self.cost_model()?;
         let smoother = match req.smoother.as_deref().or(self.planner.smoother.as_deref()) {
             None | Some("none") => None,
-            Some(id) => Some(build_smoother(id)?),
+            Some(sid) => {
+                let params = req.smoother_params.as_ref().or(self.planner.smoother_params.get(sid));
+                Some(build_smoother_with(&c.smoothers, sid, params)?)
+            }
         };
         if let Some(init) = &req.init {
             if init.len() != self.missions.len() {
@@ -157,7 +256,18 @@ impl Scenario {
         req: &PlanRequest,
         observer: &mut dyn FnMut(&Progress),
     ) -> Result<PlanReport> {
-        let Prepared { mut planner, termination, limit_source, cost, smoother } = self.prepare(planners, req)?;
+        self.plan_in(&Components { planners: planners.clone(), ..Components::default() }, req, observer)
+    }
+
+    /// Runs one plan with the planner and smoother tables `c` (the built-in ones, possibly
+    /// extended).
+    pub fn plan_in(
+        &self,
+        c: &Components,
+        req: &PlanRequest,
+        observer: &mut dyn FnMut(&Progress),
+    ) -> Result<PlanReport> {
+        let Prepared { mut planner, termination, limit_source, cost, smoother } = self.prepare(c, req)?;
         let problem = self.problem(cost.as_ref());
         let options = SolveOptions {
             run: RunOptions { init: req.init.as_deref(), parallel: req.parallel },

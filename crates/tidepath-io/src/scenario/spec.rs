@@ -398,6 +398,12 @@ pub struct PlannerSpec {
     pub id: String,
     pub iterations: Option<u64>,
     pub evaluations: Option<u64>,
+    /// Limits in the units graph and sampling planners count; a limit in a unit the planner
+    /// does not count is left aside (it is a default for whichever planner runs).
+    pub expansions: Option<u64>,
+    pub samples: Option<u64>,
+    /// Stop once the best cost is at most this.
+    pub target_cost: Option<f64>,
     /// Wall-time safety net (s); results that hit it depend on the machine.
     pub time_limit_s: Option<f64>,
     pub population: Option<usize>,
@@ -405,6 +411,8 @@ pub struct PlannerSpec {
     pub params: BTreeMap<String, toml::Table>,
     /// A smoother every plan goes through (`shortcut`), or none.
     pub smoother: Option<String>,
+    /// Per-smoother parameters: `[planner.smoother_params.shortcut]`, ...
+    pub smoother_params: BTreeMap<String, toml::Table>,
 }
 
 impl Default for PlannerSpec {
@@ -413,10 +421,14 @@ impl Default for PlannerSpec {
             id: "hybrid".into(),
             iterations: Some(200),
             evaluations: None,
+            expansions: None,
+            samples: None,
+            target_cost: None,
             time_limit_s: None,
             population: None,
             params: BTreeMap::new(),
             smoother: None,
+            smoother_params: BTreeMap::new(),
         }
     }
 }

@@ -11,59 +11,39 @@
 //! excess: the count makes each violation cost about as much as the whole straight path, so a
 //! feasible path always wins, and the excess gives the search a direction.
 
-use serde::{Deserialize, Serialize};
-
 use super::CostModel;
 use crate::error::{Error, Result};
 use crate::geom::Vec3;
+use crate::params::{Bound, Checked, Range};
 use crate::path::PathModel;
-use crate::registry::Param;
 use crate::scratch::Scratch;
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct GeneralWeights {
-    pub length: f64,
-    pub time: f64,
-    pub collision: f64,
-    pub turn: f64,
-    pub pitch: f64,
-}
-
-impl Default for GeneralWeights {
-    fn default() -> Self {
-        Self { length: 1.0, time: 1.0, collision: 10.0, turn: 1.0, pitch: 1.0 }
+crate::params! {
+    /// The general model's weights (`[cost] weights`).
+    pub struct GeneralWeights {
+        /// Weight of length over the straight start-goal distance.
+        length: f64 = 1.0, NON_NEGATIVE, "tidepath";
+        /// Weight of travel time over the still-water straight time.
+        time: f64 = 1.0, NON_NEGATIVE, "tidepath";
+        /// Per collision, bounds, endpoint or current violation.
+        collision: f64 = 10.0, NON_NEGATIVE, "tidepath";
+        /// Per turn violation plus its excess (rad).
+        turn: f64 = 1.0, NON_NEGATIVE, "tidepath";
+        /// Per pitch violation plus its excess (rad).
+        pitch: f64 = 1.0, NON_NEGATIVE, "tidepath";
     }
+    check = some_length_or_time;
 }
 
-impl GeneralWeights {
-    pub fn check(&self) -> Result<()> {
-        for (name, w) in [
-            ("length", self.length),
-            ("time", self.time),
-            ("collision", self.collision),
-            ("turn", self.turn),
-            ("pitch", self.pitch),
-        ] {
-            if !(w >= 0.0 && w.is_finite()) {
-                return Err(Error::input(format!("cost.weights.{name}"), format!("must be finite and >= 0, got {w}")));
-            }
-        }
-        if self.length + self.time == 0.0 {
-            return Err(Error::input("cost.weights", "length and time cannot both be 0"));
-        }
-        Ok(())
+const NON_NEGATIVE: Range = Range::Number { lo: Bound::Closed(0.0), hi: Bound::Unbounded };
+
+/// A model that weighs neither length nor time has nothing to minimise.
+fn some_length_or_time(w: &GeneralWeights, prefix: &str) -> Result<()> {
+    if w.length + w.time == 0.0 {
+        return Err(Error::input(prefix, "length and time cannot both be 0"));
     }
+    Ok(())
 }
-
-/// The weights' ranges, for `tidepath planners` and the registry.
-pub const PARAMS: &[Param] = &[
-    Param { name: "length", range: "finite, >= 0", help: "weight of length / straight start-goal distance" },
-    Param { name: "time", range: "finite, >= 0", help: "weight of travel time / still-water straight time" },
-    Param { name: "collision", range: "finite, >= 0", help: "per collision, bounds, endpoint or current violation" },
-    Param { name: "turn", range: "finite, >= 0", help: "per turn violation plus its excess (rad)" },
-    Param { name: "pitch", range: "finite, >= 0", help: "per pitch violation plus its excess (rad)" },
-];
 
 #[derive(Clone, Debug)]
 pub struct GeneralCost {
@@ -71,9 +51,8 @@ pub struct GeneralCost {
 }
 
 impl GeneralCost {
-    pub fn new(weights: GeneralWeights) -> Result<Self> {
-        weights.check()?;
-        Ok(Self { weights })
+    pub fn new(weights: Checked<GeneralWeights>) -> Self {
+        Self { weights: weights.into_inner() }
     }
 
     /// Straight start-goal distance L0 (m) and the time to cover it in still water T0 (s) for

@@ -8,7 +8,7 @@ pub use general::{GeneralCost, GeneralWeights};
 use crate::error::Result;
 use crate::geom::Vec3;
 use crate::path::PathModel;
-use crate::registry::{defaults_of, Entry, Registry};
+use crate::registry::{Entry, Registry};
 use crate::scratch::Scratch;
 
 pub type BuildCost = fn(&toml::Table) -> Result<Box<dyn CostModel>>;
@@ -18,12 +18,8 @@ pub const COST_MODELS: &[Entry<BuildCost>] = &[Entry {
     id: "general",
     description: "normalised length and time plus violation counts and excesses (users' own missions)",
     citation: "tidepath",
-    params: general::PARAMS,
-    defaults: defaults_of::<GeneralWeights>,
-    build: |t| {
-        let w: GeneralWeights = crate::config::from_value(toml::Value::Table(t.clone()), "cost.weights")?;
-        Ok(Box::new(GeneralCost::new(w)?))
-    },
+    params: GeneralWeights::SPECS,
+    build: |t| Ok(Box::new(GeneralCost::new(GeneralWeights::from_table(t, "cost.weights")?))),
 }];
 
 pub fn registry() -> Registry<BuildCost> {

@@ -9,7 +9,8 @@ pub use sliced::Sliced;
 
 use crate::error::Result;
 use crate::geom::{Aabb, Vec3};
-use crate::registry::{Entry, Param, Registry};
+use crate::params::{Checked, Range};
+use crate::registry::{Entry, Registry};
 
 /// What an encoding is built from: one mission's endpoints, the domain and the height band.
 #[derive(Clone, Copy, Debug)]
@@ -41,16 +42,22 @@ impl Default for EncodingSpec {
 
 pub type BuildEncoding = fn(&EncodingArgs<'_>) -> Result<Box<dyn Encoding>>;
 
-const WAYPOINTS: Param = Param {
-    name: "waypoints",
-    range: "integer in [1, 10000]",
-    help: "interior waypoints (start and goal come on top)",
-};
+/// Most interior waypoints an encoding may have: a path of more is no route a vehicle flies.
+pub const MAX_WAYPOINTS: usize = 10_000;
 
-fn waypoint_defaults() -> toml::Table {
-    let mut t = toml::Table::new();
-    t.insert("waypoints".into(), toml::Value::Integer(20));
-    t
+crate::params! {
+    /// The encodings' one parameter (`[encoding] waypoints`).
+    pub struct EncodingParams {
+        /// Interior waypoints (start and goal come on top).
+        waypoints: usize = 20, Range::integer(1, MAX_WAYPOINTS as u64), "tidepath";
+    }
+}
+
+impl EncodingSpec {
+    /// The spec with its waypoint count checked (`encoding.waypoints` in errors).
+    pub fn checked(&self) -> Result<Checked<EncodingParams>> {
+        EncodingParams { waypoints: self.waypoints }.checked("encoding")
+    }
 }
 
 /// The encodings, selected by `[encoding] kind`.
@@ -59,16 +66,14 @@ pub const ENCODINGS: &[Entry<BuildEncoding>] = &[
         id: "sliced",
         description: "one waypoint on each of n planes across the start-goal axis (cannot turn back along it)",
         citation: "wpa2017 section 3.1, lfhh2019 eqs. 12-13, ijs2023 section 3.1 (generalised to any axis)",
-        params: &[WAYPOINTS],
-        defaults: waypoint_defaults,
+        params: EncodingParams::SPECS,
         build: |a| Ok(Box::new(Sliced::new(a.start, a.goal, a.waypoints, a.bounds, a.z_range)?)),
     },
     Entry {
         id: "free",
         description: "n waypoints anywhere in the domain, visited in order",
         citation: "amfa2015 section 4",
-        params: &[WAYPOINTS],
-        defaults: waypoint_defaults,
+        params: EncodingParams::SPECS,
         build: |a| Ok(Box::new(FreeWaypoints::new(a.start, a.goal, a.waypoints, a.bounds, a.z_range)?)),
     },
 ];

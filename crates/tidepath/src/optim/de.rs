@@ -25,52 +25,24 @@
 
 use rand::Rng as _;
 
+use super::MAX_POPULATION;
 use super::{Context, Optimizer, Population};
-use crate::error::{Error, Result};
-use crate::registry::Param;
+use crate::params::{Bound, Checked, Range};
 use crate::rng::fill_unit_f64;
 
-/// The parameters' ranges, for the planner table.
-pub const PARAMS: &[Param] = &[
-    Param { name: "population", range: "integer in [4, 100000]", help: "population size NP (default 40)" },
-    Param { name: "f", range: "(0, 2]", help: "differential weight F (default 0.5)" },
-    Param { name: "cr", range: "[0, 1]", help: "crossover rate CR (default 0.9)" },
-];
-
-/// DE/rand/1/bin parameters.
-
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct DeParams {
-    /// Population size NP (at least 4). Default 40.
-    pub population: usize,
-    /// Differential weight F, in (0, 2]. Default 0.5.
-    pub f: f64,
-    /// Crossover rate CR, in [0, 1]. Default 0.9.
-    pub cr: f64,
-}
-
-impl Default for DeParams {
-    fn default() -> Self {
-        Self { population: 40, f: 0.5, cr: 0.9 }
+crate::params! {
+    /// DE/rand/1/bin parameters.
+    pub struct DeParams {
+        /// Population size NP.
+        population: usize = 40, Range::integer(4, MAX_POPULATION as u64), "Storn & Price 1997";
+        /// Differential weight F.
+        f: f64 = 0.5, Range::Number { lo: Bound::Open(0.0), hi: Bound::Closed(2.0) }, "Storn & Price 1997";
+        /// Crossover rate CR.
+        cr: f64 = 0.9, Range::closed(0.0, 1.0), "Storn & Price 1997";
     }
 }
 
-impl DeParams {
-    /// Rejects values the algorithm cannot run with.
-    pub fn check(&self) -> Result<()> {
-        super::check_population(self.population, 4)?;
-        if !(self.f.is_finite() && self.f > 0.0 && self.f <= 2.0) {
-            return Err(Error::input("planner.params.f", format!("must be in (0, 2], got {}", self.f)));
-        }
-        if !(0.0..=1.0).contains(&self.cr) {
-            return Err(Error::input("planner.params.cr", format!("must be in [0, 1], got {}", self.cr)));
-        }
-        Ok(())
-    }
-}
-
-/// DE/rand/1/bin. Construct with [`De::new`]; the parameters should pass [`DeParams::check`].
+/// DE/rand/1/bin, built from checked parameters.
 #[derive(Clone, Debug)]
 pub struct De {
     params: DeParams,
@@ -83,9 +55,9 @@ pub struct De {
 }
 
 impl De {
-    pub fn new(params: DeParams) -> Self {
+    pub fn new(params: Checked<DeParams>) -> Self {
         Self {
-            params,
+            params: params.into_inner(),
             x: Population::zeros(0, 0),
             cost: Vec::new(),
             trial: Population::zeros(0, 0),
@@ -193,7 +165,7 @@ mod tests {
     fn defaults_and_check() {
         let p = DeParams::default();
         assert_eq!((p.population, p.f, p.cr), (40, 0.5, 0.9));
-        assert!(p.check().is_ok());
+        assert!(p.clone().checked("p").is_ok());
         for bad in [
             DeParams { population: 3, ..p.clone() },
             DeParams { f: 0.0, ..p.clone() },
@@ -202,12 +174,12 @@ mod tests {
             DeParams { cr: -0.1, ..p.clone() },
             DeParams { cr: f64::NAN, ..p.clone() },
         ] {
-            let e = bad.check().unwrap_err().to_string();
-            assert!(e.starts_with("planner.params."), "{e}");
+            let e = bad.checked("planner.params.de").unwrap_err().to_string();
+            assert!(e.starts_with("planner.params.de."), "{e}");
         }
-        let q: DeParams = serde_json::from_str(r#"{"cr": 0.3}"#).unwrap();
-        assert_eq!(q, DeParams { cr: 0.3, ..DeParams::default() });
-        assert!(serde_json::from_str::<DeParams>(r#"{"F": 0.3}"#).is_err());
+        let q = DeParams::from_table(&toml::from_str("cr = 0.3").unwrap(), "p").unwrap();
+        assert_eq!(*q.get(), DeParams { cr: 0.3, ..DeParams::default() });
+        assert!(DeParams::from_table(&toml::from_str("F = 0.3").unwrap(), "p").is_err());
     }
 
     #[test]
@@ -220,7 +192,7 @@ mod tests {
     #[test]
     fn converges_on_sphere_and_never_worsens() {
         let obj = FunctionObjective::new(Function::Sphere, 5, -5.12, 5.12);
-        let mut de = De::new(DeParams::default());
+        let mut de = De::new(DeParams::default().checked("p").unwrap());
         let r =
             run(&mut de, &obj, &Termination::iterations(200), &mut crate::rng::run_rng(1, 0), false, &[], &mut |_| {});
         assert!(r.best_cost < 1e-8, "{}", r.best_cost);

@@ -39,30 +39,14 @@
 use rand::Rng as _;
 use rand_distr::StandardNormal;
 
+use super::MAX_POPULATION;
 use super::{Context, Optimizer, Population};
-use crate::error::{Error, Result};
-use crate::registry::Param;
+use crate::error::Result;
+use crate::params::{field_error, Bound, Checked, Range, Word};
 use crate::rng::{fill_unit_f64, Rng};
 
-/// The parameters' ranges, for the planner table.
-pub const PARAMS: &[Param] = &[
-    Param {
-        name: "coding",
-        range: "\"real\" or \"binary\"",
-        help: "real-coded or bit-string chromosomes (default real)",
-    },
-    Param { name: "population", range: "integer in [2, 100000]", help: "population size (default 50)" },
-    Param { name: "crossover_rate", range: "[0, 1]", help: "probability a parent pair is crossed (default 0.8)" },
-    Param { name: "mutation_rate", range: "[0, 1], or absent", help: "per gene or per bit; absent: 1/D" },
-    Param { name: "bits", range: "integer in [1, 52]", help: "bits per variable, binary coding (default 20)" },
-    Param { name: "elitism", range: "integer below population", help: "best individuals copied unchanged (default 1)" },
-    Param { name: "sigma_fraction", range: "(0, 1]", help: "Gaussian step / box width, real coding (default 0.1)" },
-];
-
 /// How a GA individual is coded.
-
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "lowercase")]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum GaCoding {
     /// Real-valued genes (wpa2017).
     #[default]
@@ -71,31 +55,44 @@ pub enum GaCoding {
     Binary,
 }
 
-/// GA parameters. Defaults: wpa2017's real-coded GA.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct GaParams {
-    /// `"real"` (default) or `"binary"`.
-    pub coding: GaCoding,
-    /// Population size (at least 2). Default 50.
-    pub population: usize,
-    /// Probability that a parent pair is crossed, in [0, 1]. Default 0.8.
-    pub crossover_rate: f64,
-    /// Mutation probability per gene (real) or per bit (binary), in [0, 1]. `None` (default):
-    /// 1/D with D the number of variables.
-    pub mutation_rate: Option<f64>,
-    /// Bits per variable for the binary coding, 1 to 52. Default 20. Ignored by the real coding.
-    pub bits: u32,
-    /// Number of best individuals copied unchanged, below `population`. Default 1.
-    pub elitism: usize,
-    /// Gaussian mutation step as a fraction of the box width (real coding). Default 0.1.
-    pub sigma_fraction: f64,
+impl Word for GaCoding {
+    const WORDS: &'static [(&'static str, Self)] = &[("real", GaCoding::Real), ("binary", GaCoding::Binary)];
 }
 
-impl Default for GaParams {
-    fn default() -> Self {
-        Self::wpa2017()
+crate::params::word_param!(GaCoding);
+
+crate::params! {
+    /// GA parameters. Defaults: wpa2017's real-coded GA.
+    pub struct GaParams {
+        /// Real-valued genes or bit strings.
+        coding: GaCoding = GaCoding::Real, Range::Choice(&["real", "binary"]), "wpa2017 (real), amfa2015 (binary)";
+        /// Population size.
+        population: usize = 50, Range::integer(2, MAX_POPULATION as u64), "wpa2017 Table 3";
+        /// Probability that a parent pair is crossed.
+        crossover_rate: f64 = 0.8, Range::closed(0.0, 1.0), "wpa2017 Table 3";
+        /// Mutation probability per gene (real) or per bit (binary); absent: 1/D with D the
+        /// number of variables.
+        mutation_rate: Option<f64> = None, Range::closed(0.0, 1.0), "docs/papers/shared.md#ga";
+        /// Bits per variable for the binary coding (ignored by the real coding).
+        bits: u32 = 20, Range::integer(1, 52), "amfa2015 section 5";
+        /// Best individuals copied unchanged; below the population.
+        elitism: usize = 1, Range::integer(0, MAX_POPULATION as u64 - 1), "tidepath";
+        /// Gaussian mutation step as a fraction of the box width (real coding).
+        sigma_fraction: f64 = 0.1, Range::Number { lo: Bound::Closed(0.0), hi: Bound::Unbounded }, "tidepath";
     }
+    check = check_elitism;
+}
+
+/// Elitism keeps fewer individuals than the population holds.
+fn check_elitism(p: &GaParams, prefix: &str) -> Result<()> {
+    if p.elitism >= p.population {
+        return Err(field_error(
+            prefix,
+            "elitism",
+            format!("must be below population ({}), got {}", p.population, p.elitism),
+        ));
+    }
+    Ok(())
 }
 
 impl GaParams {
@@ -125,38 +122,6 @@ impl GaParams {
             elitism: 1,
             sigma_fraction: 0.1,
         }
-    }
-
-    /// Rejects values the algorithm cannot run with.
-    pub fn check(&self) -> Result<()> {
-        super::check_population(self.population, 2)?;
-        if !(0.0..=1.0).contains(&self.crossover_rate) {
-            return Err(Error::input(
-                "planner.params.crossover_rate",
-                format!("must be in [0, 1], got {}", self.crossover_rate),
-            ));
-        }
-        if let Some(pm) = self.mutation_rate {
-            if !(0.0..=1.0).contains(&pm) {
-                return Err(Error::input("planner.params.mutation_rate", format!("must be in [0, 1], got {pm}")));
-            }
-        }
-        if !(1..=52).contains(&self.bits) {
-            return Err(Error::input("planner.params.bits", format!("must be in 1..=52, got {}", self.bits)));
-        }
-        if self.elitism >= self.population {
-            return Err(Error::input(
-                "planner.params.elitism",
-                format!("must be below population ({}), got {}", self.population, self.elitism),
-            ));
-        }
-        if !(self.sigma_fraction.is_finite() && self.sigma_fraction >= 0.0) {
-            return Err(Error::input(
-                "planner.params.sigma_fraction",
-                format!("must be finite and >= 0, got {}", self.sigma_fraction),
-            ));
-        }
-        Ok(())
     }
 }
 
@@ -283,9 +248,9 @@ pub struct Ga {
 }
 
 impl Ga {
-    pub fn new(params: GaParams) -> Self {
+    pub fn new(params: Checked<GaParams>) -> Self {
         Self {
-            params,
+            params: params.into_inner(),
             pm: 0.0,
             sigma: Vec::new(),
             x: Population::zeros(0, 0),
@@ -522,7 +487,7 @@ mod tests {
         );
         let q = GaParams::amfa2015();
         assert_eq!((q.coding, q.population, q.crossover_rate, q.bits), (GaCoding::Binary, 40, 0.6, 20));
-        assert!(p.check().is_ok() && q.check().is_ok());
+        assert!(p.clone().checked("p").is_ok() && q.clone().checked("p").is_ok());
         for bad in [
             GaParams { population: 1, elitism: 0, ..p.clone() },
             GaParams { crossover_rate: 1.5, ..p.clone() },
@@ -533,17 +498,18 @@ mod tests {
             GaParams { elitism: 50, ..p.clone() },
             GaParams { sigma_fraction: f64::INFINITY, ..p.clone() },
         ] {
-            let e = bad.check().unwrap_err().to_string();
-            assert!(e.starts_with("planner.params."), "{e}");
+            let e = bad.checked("planner.params.ga").unwrap_err().to_string();
+            assert!(e.starts_with("planner.params.ga."), "{e}");
         }
     }
 
     #[test]
-    fn serde_coding_names() {
-        let p: GaParams = serde_json::from_str(r#"{"coding": "binary", "bits": 12}"#).unwrap();
-        assert_eq!(p, GaParams { coding: GaCoding::Binary, bits: 12, ..GaParams::default() });
-        assert!(serde_json::from_str::<GaParams>(r#"{"coding": "gray"}"#).is_err());
-        assert!(serde_json::from_str::<GaParams>(r#"{"pc": 0.5}"#).is_err());
+    fn coding_names() {
+        let t = |s: &str| GaParams::from_table(&toml::from_str(s).unwrap(), "p");
+        let p = t("coding = \"binary\"\nbits = 12").unwrap();
+        assert_eq!(*p.get(), GaParams { coding: GaCoding::Binary, bits: 12, ..GaParams::default() });
+        assert!(t("coding = \"gray\"").is_err());
+        assert!(t("pc = 0.5").is_err());
     }
 
     #[test]
@@ -605,7 +571,7 @@ mod tests {
     fn both_codings_improve_and_keep_the_elite() {
         for params in [GaParams::wpa2017(), GaParams::amfa2015()] {
             let obj = FunctionObjective::new(Function::Sphere, 4, -5.12, 5.12);
-            let mut ga = Ga::new(params.clone());
+            let mut ga = Ga::new(params.clone().checked("p").unwrap());
             let r = run(
                 &mut ga,
                 &obj,

@@ -32,56 +32,49 @@
 
 use rand::Rng as _;
 
+use super::MAX_POPULATION;
 use super::{clamp, Context, Optimizer, Population};
-use crate::error::{Error, Result};
-use crate::registry::Param;
+use crate::error::Result;
+use crate::params::{field_error, Bound, Checked, Range};
 use crate::rng::unit_f64;
+use crate::termination::MAX_COUNT;
 
-/// The parameters' ranges, for the planner table.
-pub const PARAMS: &[Param] = &[
-    Param { name: "population", range: "integer in [2, 100000]", help: "number of particles (default 40)" },
-    Param { name: "w_start", range: "finite", help: "inertia weight at the start (default 0.729)" },
-    Param { name: "w_end", range: "finite", help: "inertia weight after the schedule (default 0.729)" },
-    Param {
-        name: "w_schedule_iterations",
-        range: "integer >= 1, or absent",
-        help: "length of the linear inertia schedule; absent: constant w_start",
-    },
-    Param { name: "c1", range: "finite, >= 0", help: "cognitive coefficient (default 1.494)" },
-    Param { name: "c2", range: "finite, >= 0", help: "social coefficient (default 1.494)" },
-    Param {
-        name: "vmax_fraction",
-        range: "finite, > 0",
-        help: "velocity clamp as a fraction of the box width (default 1)",
-    },
-];
-
-/// PSO parameters. Defaults: amfa2015's set (see the module documentation).
-
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct PsoParams {
-    /// Number of particles. Default 40.
-    pub population: usize,
-    /// Inertia weight at the start of the run. Default 0.729.
-    pub w_start: f64,
-    /// Inertia weight reached after `w_schedule_iterations` iterations. Default 0.729.
-    pub w_end: f64,
-    /// Length of the linear inertia schedule in iterations. `None` (default): constant
-    /// `w_start`, which requires `w_end == w_start`.
-    pub w_schedule_iterations: Option<u64>,
-    /// Cognitive coefficient. Default 1.494.
-    pub c1: f64,
-    /// Social coefficient. Default 1.494.
-    pub c2: f64,
-    /// Velocity clamp as a fraction of the box width, per dimension. Default 1.0.
-    pub vmax_fraction: f64,
+crate::params! {
+    /// PSO parameters. Defaults: amfa2015's set (see the module documentation).
+    pub struct PsoParams {
+        /// Number of particles.
+        population: usize = 40, Range::integer(2, MAX_POPULATION as u64), "amfa2015 section 5";
+        /// Inertia weight at the start of the run.
+        w_start: f64 = 0.729, Range::finite(), "amfa2015 section 5";
+        /// Inertia weight reached after `w_schedule_iterations` iterations (equal to w_start
+        /// when there is no schedule).
+        w_end: f64 = 0.729, Range::finite(), "amfa2015 section 5";
+        /// Length of the linear inertia schedule in iterations; absent: constant w_start.
+        w_schedule_iterations: Option<u64> = None, Range::integer(1, MAX_COUNT), "Shi & Eberhart 1999";
+        /// Cognitive coefficient.
+        c1: f64 = 1.494, Range::Number { lo: Bound::Closed(0.0), hi: Bound::Unbounded }, "amfa2015 section 5";
+        /// Social coefficient.
+        c2: f64 = 1.494, Range::Number { lo: Bound::Closed(0.0), hi: Bound::Unbounded }, "amfa2015 section 5";
+        /// Velocity clamp as a fraction of the box width, per dimension.
+        vmax_fraction: f64 = 1.0, Range::Number { lo: Bound::Open(0.0), hi: Bound::Unbounded }, "amfa2015 section 5";
+    }
+    check = check_schedule;
 }
 
-impl Default for PsoParams {
-    fn default() -> Self {
-        Self::amfa2015()
+/// Without a schedule the inertia is constant, so w_end must equal w_start.
+fn check_schedule(p: &PsoParams, prefix: &str) -> Result<()> {
+    if p.w_schedule_iterations.is_none() && p.w_end != p.w_start {
+        return Err(field_error(
+            prefix,
+            "w_end",
+            format!(
+                "must equal w_start ({}) when w_schedule_iterations is not set, got {}; set \
+                 w_schedule_iterations for a linear schedule",
+                p.w_start, p.w_end
+            ),
+        ));
     }
+    Ok(())
 }
 
 impl PsoParams {
@@ -126,44 +119,6 @@ impl PsoParams {
         }
     }
 
-    /// Rejects values the algorithm cannot run with.
-    pub fn check(&self) -> Result<()> {
-        super::check_population(self.population, 2)?;
-        for (name, v) in [("w_start", self.w_start), ("w_end", self.w_end), ("c1", self.c1), ("c2", self.c2)] {
-            if !v.is_finite() {
-                return Err(Error::input(format!("planner.params.{name}"), format!("must be finite, got {v}")));
-            }
-        }
-        for (name, v) in [("c1", self.c1), ("c2", self.c2)] {
-            if v < 0.0 {
-                return Err(Error::input(format!("planner.params.{name}"), format!("must be >= 0, got {v}")));
-            }
-        }
-        if !(self.vmax_fraction.is_finite() && self.vmax_fraction > 0.0) {
-            return Err(Error::input(
-                "planner.params.vmax_fraction",
-                format!("must be finite and > 0, got {}", self.vmax_fraction),
-            ));
-        }
-        match self.w_schedule_iterations {
-            Some(0) => {
-                return Err(Error::input("planner.params.w_schedule_iterations", "must be at least 1, got 0"));
-            }
-            None if self.w_end != self.w_start => {
-                return Err(Error::input(
-                    "planner.params.w_end",
-                    format!(
-                        "must equal w_start ({}) when w_schedule_iterations is not set, got {}; set \
-                         w_schedule_iterations for a linear schedule",
-                        self.w_start, self.w_end
-                    ),
-                ));
-            }
-            _ => {}
-        }
-        Ok(())
-    }
-
     /// Inertia weight used in iteration `k` (1-based).
     pub fn inertia(&self, k: u64) -> f64 {
         match self.w_schedule_iterations {
@@ -176,8 +131,7 @@ impl PsoParams {
     }
 }
 
-/// Inertia-weight PSO. Construct with [`Pso::new`]; the parameters should pass
-/// [`PsoParams::check`].
+/// Inertia-weight PSO, built from checked parameters.
 #[derive(Clone, Debug)]
 pub struct Pso {
     params: PsoParams,
@@ -196,9 +150,9 @@ pub struct Pso {
 }
 
 impl Pso {
-    pub fn new(params: PsoParams) -> Self {
+    pub fn new(params: Checked<PsoParams>) -> Self {
         Self {
-            params,
+            params: params.into_inner(),
             x: Population::zeros(0, 0),
             v: Vec::new(),
             cost: Vec::new(),
@@ -325,10 +279,10 @@ mod tests {
             (p.population, p.w_start, p.w_end, p.c1, p.c2, p.vmax_fraction),
             (40, 0.729, 0.729, 1.494, 1.494, 1.0)
         );
-        assert!(p.check().is_ok());
-        assert!(PsoParams::wpa2017().check().is_ok());
+        assert!(p.clone().checked("p").is_ok());
+        assert!(PsoParams::wpa2017().checked("p").is_ok());
         let p3 = PsoParams::ijs2023(500);
-        assert!(p3.check().is_ok());
+        assert!(p3.clone().checked("p").is_ok());
         assert_eq!(p3.inertia(0), 0.9);
         assert!((p3.inertia(250) - 0.65).abs() < 1e-12);
         assert_eq!(p3.inertia(500), 0.4);
@@ -348,24 +302,27 @@ mod tests {
             PsoParams { w_schedule_iterations: Some(0), ..PsoParams::default() },
         ];
         for p in bad {
-            let e = p.check().unwrap_err().to_string();
-            assert!(e.starts_with("planner.params."), "{e}");
+            let e = p.checked("planner.params.pso").unwrap_err().to_string();
+            assert!(e.starts_with("planner.params.pso."), "{e}");
         }
     }
 
     #[test]
-    fn serde_defaults_and_unknown_fields() {
-        let p: PsoParams = serde_json::from_str(r#"{"population": 10}"#).unwrap();
-        assert_eq!(p, PsoParams { population: 10, ..PsoParams::default() });
-        assert!(serde_json::from_str::<PsoParams>(r#"{"inertia": 0.5}"#).is_err());
-        let back: PsoParams = serde_json::from_str(&serde_json::to_string(&PsoParams::ijs2023(7)).unwrap()).unwrap();
-        assert_eq!(back, PsoParams::ijs2023(7));
+    fn tables_defaults_and_unknown_fields() {
+        let t: toml::Table = toml::from_str("population = 10").unwrap();
+        let p = PsoParams::from_table(&t, "planner.params.pso").unwrap();
+        assert_eq!(*p.get(), PsoParams { population: 10, ..PsoParams::default() });
+        let t: toml::Table = toml::from_str("inertia = 0.5").unwrap();
+        assert!(PsoParams::from_table(&t, "p").is_err());
+        let back = PsoParams::from_table(&PsoParams::ijs2023(7).to_table(), "p").unwrap();
+        assert_eq!(*back.get(), PsoParams::ijs2023(7));
+        assert_eq!(PsoParams::default(), PsoParams::amfa2015());
     }
 
     #[test]
     fn stays_in_box_and_converges_on_sphere() {
         let obj = FunctionObjective::new(Function::Sphere, 5, -5.12, 5.12);
-        let mut pso = Pso::new(PsoParams::default());
+        let mut pso = Pso::new(PsoParams::default().checked("p").unwrap());
         let r =
             run(&mut pso, &obj, &Termination::iterations(100), &mut crate::rng::run_rng(3, 0), false, &[], &mut |_| {});
         assert!(r.best_cost < 1e-6, "{}", r.best_cost);

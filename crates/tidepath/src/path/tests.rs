@@ -146,7 +146,7 @@ fn general_cost_terms_by_hand() {
     let mission = Mission::new("m", v, p[0], p[2], 0.0);
     let m = PathModel::new(&w, &mission, &s);
     let weights = GeneralWeights { length: 1.0, time: 2.0, collision: 10.0, turn: 3.0, pitch: 1.0 };
-    let cost = GeneralCost::new(weights).unwrap();
+    let cost = GeneralCost::new(weights.checked("cost.weights").unwrap());
     let (total, terms) = cost.breakdown(&m, &p);
     // Straight distance 50 m, 25 s. Path 70 m, 35 s. One turn of 90 degrees against 60.
     let expect = [1.4, 2.0 * 1.4, 0.0, 3.0 * (1.0 + 30f64.to_radians()), 0.0];

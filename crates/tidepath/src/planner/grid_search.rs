@@ -7,12 +7,12 @@
 //! costlier than A*'s, but not guaranteed optimal.
 
 use super::raster_search::{Objective, RasterSearch};
-use super::{Claim, Planner, PlannerOutput, PlannerSettings, Problem, RunOptions, SearchStats};
+use super::{Claim, Planner, PlannerOutput, Problem, RunOptions, SearchStats};
 use crate::error::{Error, Result};
 use crate::geom::Vec3;
 use crate::optim::Progress;
+use crate::params::{Bound, Checked, Range, Word};
 use crate::raster::Raster;
-use crate::registry::Param;
 use crate::rng::Rng;
 use crate::termination::{StopReason, Termination};
 use crate::world::{Dims, Terrain, World};
@@ -21,62 +21,26 @@ use crate::world::{Dims, Terrain, World};
 /// on its own cells by default (beyond, the default raster applies).
 const MAX_MAP_CELLS: f64 = 1000.0;
 
-/// The parameters of the grid planners.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct GridParams {
-    /// What a move costs: the scenario's cost model (default), or its length or time alone.
-    pub objective: Objective,
-    /// Horizontal cell size (m); 0 picks one so the domain's longer side has `cells` cells.
-    pub cell: f64,
-    /// Cells along the domain's longer side when `cell` is 0; 0 picks 200 in 2-D and 80 in
-    /// 3-D (where the voxels also span the depth band, and every edge is a motion check).
-    pub cells: usize,
-    /// Layers across the depth band (3-D).
-    pub layers: usize,
+impl Word for Objective {
+    const WORDS: &'static [(&'static str, Self)] =
+        &[("cost", Objective::Cost), ("length", Objective::Length), ("time", Objective::Time)];
 }
 
-impl Default for GridParams {
-    fn default() -> Self {
-        Self { objective: Objective::Cost, cell: 0.0, cells: 0, layers: 16 }
-    }
-}
+crate::params::word_param!(Objective);
 
-pub const PARAMS: &[Param] = &[
-    Param {
-        name: "objective",
-        range: "\"cost\", \"length\" or \"time\"",
-        help: "what a move costs: the scenario's cost model, or length or time alone (default cost)",
-    },
-    Param { name: "cell", range: "m, >= 0", help: "horizontal cell size; 0: from `cells` (default 0)" },
-    Param {
-        name: "cells",
-        range: "0, or integer in [4, 4096]",
-        help: "cells along the domain's longer side; 0: a cell map's own cells, else 200 in 2-D, 80 in 3-D (default 0)",
-    },
-    Param {
-        name: "layers",
-        range: "integer in [1, 256]",
-        help: "voxel layers across the depth band, 3-D (default 16)",
-    },
-];
-
-impl GridParams {
-    pub fn from_settings(s: &PlannerSettings, id: &str) -> Result<Self> {
-        let mut t = s.params.clone();
-        t.remove("population");
-        let p: GridParams = crate::config::from_value(toml::Value::Table(t), &format!("planner.params.{id}"))?;
-        let field = |f: &str| format!("planner.params.{id}.{f}");
-        if !(p.cell >= 0.0 && p.cell.is_finite()) {
-            return Err(Error::input(field("cell"), format!("must be finite and >= 0, got {}", p.cell)));
-        }
-        if p.cells != 0 && !(4..=4096).contains(&p.cells) {
-            return Err(Error::input(field("cells"), format!("must be 0 or in [4, 4096], got {}", p.cells)));
-        }
-        if !(1..=256).contains(&p.layers) {
-            return Err(Error::input(field("layers"), format!("must be in [1, 256], got {}", p.layers)));
-        }
-        Ok(p)
+crate::params! {
+    /// The parameters of the grid planners.
+    pub struct GridParams {
+        /// What a move costs: the scenario's cost model, or length or time alone.
+        objective: Objective = Objective::Cost, Range::Choice(&["cost", "length", "time"]), "tidepath";
+        /// Horizontal cell size (m); absent: from `cells`.
+        cell: Option<f64> = None, Range::Number { lo: Bound::Open(0.0), hi: Bound::Closed(1e7) }, "tidepath";
+        /// Cells along the domain's longer side when `cell` is absent; absent: a cell map's
+        /// own cells, else 200 in 2-D and 80 in 3-D (where the voxels also span the depth band
+        /// and every edge is a motion check).
+        cells: Option<usize> = None, Range::integer(4, 4096), "tidepath";
+        /// Voxel layers across the depth band (3-D).
+        layers: usize = 16, Range::integer(1, 256), "tidepath";
     }
 }
 
@@ -90,8 +54,9 @@ pub struct GridSearch {
 }
 
 impl GridSearch {
-    pub fn new(id: &'static str, params: GridParams, any_angle: bool) -> Self {
-        Self { id, params, any_angle }
+    /// A grid planner from checked parameters.
+    pub fn new(id: &'static str, params: Checked<GridParams>, any_angle: bool) -> Self {
+        Self { id, params: params.into_inner(), any_angle }
     }
 }
 
@@ -113,15 +78,15 @@ impl GridSearch {
         let m = &problem.missions[i];
         let size = w.bounds.size();
         let cells = match self.params.cells {
-            0 if w.dims == Dims::Three => 80,
-            0 => 200,
-            n => n,
+            None if w.dims == Dims::Three => 80,
+            None => 200,
+            Some(n) => n,
         };
         // A seabed given cell by cell is searched on its own cells (when they are not too many
         // and nothing else was asked): the raster then sees exactly the map.
         let map_cell = match &w.terrain {
             Terrain::Cells(c)
-                if self.params.cells == 0
+                if self.params.cells.is_none()
                     && c.dx == c.dy
                     && size.x.max(size.y) / c.dx <= MAX_MAP_CELLS
                     && c.x0 == w.bounds.min.x
@@ -131,11 +96,7 @@ impl GridSearch {
             }
             _ => None,
         };
-        let cell = if self.params.cell > 0.0 {
-            self.params.cell
-        } else {
-            map_cell.unwrap_or(size.x.max(size.y) / cells as f64)
-        };
+        let cell = self.params.cell.unwrap_or_else(|| map_cell.unwrap_or(size.x.max(size.y) / cells as f64));
         let band = (w.bounds.max.z.min(m.vehicle.z_max()) - w.bounds.min.z.max(m.vehicle.z_min())).max(1e-9);
         (cell, band / self.params.layers as f64, m.start.z)
     }

@@ -21,68 +21,46 @@ use rand::Rng as _;
 use super::grid_search::{GridParams, GridSearch};
 use super::{visibility, Claim, PathObjective, Planner, PlannerOutput, Problem, RunOptions, SearchStats};
 use crate::encoding::{Encoding, FreeWaypoints};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::geom::Vec3;
 use crate::optim::de::{De, DeParams};
+use crate::optim::MAX_POPULATION;
 use crate::optim::{self, Objective as _, Progress};
-use crate::registry::Param;
+use crate::params::{Checked, Range};
 use crate::rng::Rng;
-use crate::smoothing::{Shortcut, Smoother as _};
+use crate::smoothing::Smoother;
 use crate::termination::Termination;
+use crate::termination::MAX_COUNT;
 
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct HybridParams {
-    /// DE population.
-    pub population: usize,
-    /// Cells along the domain's longer side for the reference search; 0: the grid planners'
-    /// default (200 in 2-D, 80 in 3-D).
-    pub cells: usize,
-    /// Iterations of the refinement when the run gives no count limit.
-    pub iterations: u64,
-}
-
-impl Default for HybridParams {
-    fn default() -> Self {
-        Self { population: 30, cells: 0, iterations: 300 }
+crate::params! {
+    /// The composite planner's parameters.
+    pub struct HybridParams {
+        /// DE population of the refinement.
+        population: usize = 30, Range::integer(4, MAX_POPULATION as u64), "tidepath";
+        /// Raster cells along the domain's longer side for the reference search; absent: the
+        /// grid planners' default (200 in 2-D, 80 in 3-D).
+        cells: Option<usize> = None, Range::integer(4, 4096), "tidepath";
+        /// Refinement iterations when the run limits neither iterations nor evaluations.
+        iterations: u64 = 300, Range::integer(1, MAX_COUNT), "tidepath";
+        /// The smoother the reference and the result go through (a smoother id).
+        smoother: String = "shortcut".to_string(), Range::Id("smoother"), "tidepath";
     }
 }
-
-pub const PARAMS: &[Param] = &[
-    Param { name: "population", range: "integer in [4, 100000]", help: "DE population of the refinement (default 30)" },
-    Param {
-        name: "cells",
-        range: "integer in [4, 4096]",
-        help: "raster cells along the longer side for the reference (default 200)",
-    },
-    Param {
-        name: "iterations",
-        range: "integer >= 1",
-        help: "refinement iterations when the run sets no count limit (default 300)",
-    },
-];
 
 /// Most free waypoints per mission.
 const MAX_WAYPOINTS: usize = 40;
 
 pub struct Hybrid {
     params: HybridParams,
+    smoother: Box<dyn Smoother>,
 }
 
 impl Hybrid {
-    pub fn new(params: HybridParams) -> Result<Self> {
-        crate::optim::check_population(params.population, 4).map_err(|e| match e {
-            Error::Input { message, .. } => Error::input("planner.params.hybrid.population", message),
-            other => other,
-        })?;
-        if params.cells != 0 && !(4..=4096).contains(&params.cells) {
-            return Err(Error::input(
-                "planner.params.hybrid.cells",
-                format!("must be 0 or in [4, 4096], got {}", params.cells),
-            ));
-        }
-        crate::termination::check_count("planner.params.hybrid.iterations", params.iterations)?;
-        Ok(Self { params })
+    pub fn new(params: Checked<HybridParams>) -> Result<Self> {
+        let params = params.into_inner();
+        let smoother = crate::smoothing::build_smoother(&params.smoother, None)
+            .map_err(|e| e.for_field("planner.params.hybrid.smoother"))?;
+        Ok(Self { params, smoother })
     }
 
     /// The reference path of mission `i` within `termination` (a share of the run's time on
@@ -110,7 +88,9 @@ impl Hybrid {
         // grid's corners anyway).
         let any_angle = problem.world.dims == crate::world::Dims::Two;
         let id = if any_angle { "theta-star" } else { "astar" };
-        let search = GridSearch::new(id, GridParams { cells: self.params.cells, ..GridParams::default() }, any_angle);
+        let grid = GridParams { cells: self.params.cells, ..GridParams::default() };
+        let grid = grid.checked("planner.params.hybrid").expect("hybrid's cells are the grid planners' range");
+        let search = GridSearch::new(id, grid, any_angle);
         match search.search(problem, i, termination, None) {
             Ok(r) if r.path.len() >= 2 => (r.path, r.expansions),
             Ok(r) => (vec![m.start, m.goal], r.expansions),
@@ -180,7 +160,7 @@ impl Planner for Hybrid {
             let m = &problem.missions[i];
             // The reference's essential turns: drop every point whose bypass is feasible and
             // no costlier (so the arcs of a visibility path shrink to the bends that matter).
-            let r = &Shortcut.smooth(&problem.path_model(i), problem.cost, r, termination);
+            let r = &self.smoother.smooth(&problem.path_model(i), problem.cost, r, termination);
             let turns = r.len().saturating_sub(2);
             let n = (2 * turns + 4).clamp(6, 24).max(turns.min(MAX_WAYPOINTS));
             let enc = FreeWaypoints::new(m.start, m.goal, n, &problem.world.bounds, problem.z_range(i))
@@ -202,14 +182,15 @@ impl Planner for Hybrid {
         // The reference and jittered copies (up to about one raster cell, in the encoding's
         // normalised units).
         let size = problem.world.bounds.size();
-        let cells = if self.params.cells == 0 { 200.0 } else { self.params.cells as f64 };
+        let cells = self.params.cells.unwrap_or(200) as f64;
         let jitter = 1.0 / cells * size.x.max(size.y) / size.x.min(size.y).max(1e-9);
         let mut seeds = vec![base.clone()];
         for _ in 1..self.params.population {
             let x: Vec<f64> = base.iter().map(|v| v + jitter * (2.0 * rng.random::<f64>() - 1.0)).collect();
             seeds.push(x);
         }
-        let mut de = De::new(DeParams { population: self.params.population, ..DeParams::default() });
+        let de_params = DeParams { population: self.params.population, ..DeParams::default() };
+        let mut de = De::new(de_params.checked("planner.params.hybrid").expect("DE accepts every hybrid population"));
         let t = if termination.max_iterations.is_some() || termination.max_evaluations.is_some() {
             termination.clone()
         } else {
@@ -221,7 +202,7 @@ impl Planner for Hybrid {
         let paths = paths
             .iter()
             .enumerate()
-            .map(|(i, p)| Shortcut.smooth(&problem.path_model(i), problem.cost, p, termination))
+            .map(|(i, p)| self.smoother.smooth(&problem.path_model(i), problem.cost, p, termination))
             .collect();
         PlannerOutput {
             paths,

@@ -7,6 +7,7 @@
 //! every planner the same way: it checks start and goal first, runs the planner, smooths,
 //! evaluates each path with the shared path evaluation and sets the [`Status`].
 
+pub mod capabilities;
 pub mod grid_search;
 pub mod hybrid;
 mod objective;
@@ -19,9 +20,10 @@ pub mod solve;
 mod status;
 pub mod visibility;
 
+pub use capabilities::{Capabilities, Dimensions, Fleets, Unit};
 pub use objective::PathObjective;
 pub use optimizer_planner::OptimizerPlanner;
-pub use registry::{build_optimizer, registry, BuildPlanner, PlannerSettings, PLANNERS};
+pub use registry::{build_optimizer, registry, BuildPlanner, Make, PlannerSettings, PLANNERS};
 pub use solve::{solve, MissionPlan, Plan, SolveOptions};
 pub use status::Status;
 

@@ -30,6 +30,11 @@ const CORNER_SEGMENTS: usize = 16;
 
 pub struct Visibility;
 
+crate::params! {
+    /// The visibility graph has no parameters.
+    pub struct VisibilityParams {}
+}
+
 /// The scene of mission `i` at its plane, and whether it is exact (only discs and exact
 /// polygons). `inflate` divides disc radii by cos(ARC_STEP / 2) so chords stay outside.
 pub fn scene(problem: &Problem<'_>, i: usize, inflate: bool) -> Result<(Scene, bool)> {

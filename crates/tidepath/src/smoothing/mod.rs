@@ -10,7 +10,7 @@ use crate::cost::CostModel;
 use crate::error::Result;
 use crate::geom::Vec3;
 use crate::path::PathModel;
-use crate::registry::{no_params, Entry, Registry};
+use crate::registry::{Entry, Registry};
 use crate::termination::Termination;
 
 pub trait Smoother: Send + Sync {
@@ -28,22 +28,34 @@ pub trait Smoother: Send + Sync {
     ) -> Vec<Vec3>;
 }
 
-pub type BuildSmoother = fn() -> Box<dyn Smoother>;
+/// Builds a smoother from its `[planner.smoother_params.ID]` table; the prefix names the
+/// table in errors.
+pub type BuildSmoother = fn(&toml::Table, &str) -> Result<Box<dyn Smoother>>;
 
 /// The smoothers, selected by `--smooth` or `[planner] smoother`.
 pub const SMOOTHERS: &[Entry<BuildSmoother>] = &[Entry {
     id: "shortcut",
     description: "drop waypoints whose bypass is feasible and no costlier",
     citation: "tidepath (the deterministic form of OMPL's PathSimplifier::reduceVertices)",
-    params: &[],
-    defaults: no_params,
-    build: || Box::new(Shortcut),
+    params: shortcut::ShortcutParams::SPECS,
+    build: |t, prefix| Ok(Box::new(Shortcut::new(shortcut::ShortcutParams::from_table(t, prefix)?))),
 }];
 
 pub fn registry() -> Registry<BuildSmoother> {
     Registry::new("smoother", "smoother", "tidepath planners", SMOOTHERS)
 }
 
-pub fn build_smoother(id: &str) -> Result<Box<dyn Smoother>> {
-    Ok((registry().get(id)?.build)())
+/// Smoother `id` of `registry` with its parameter table (`None`: its defaults).
+pub fn build_smoother_with(
+    registry: &Registry<BuildSmoother>,
+    id: &str,
+    params: Option<&toml::Table>,
+) -> Result<Box<dyn Smoother>> {
+    let entry = registry.get(id)?;
+    (entry.build)(&params.cloned().unwrap_or_default(), &format!("planner.smoother_params.{id}"))
+}
+
+/// Built-in smoother `id` with its parameter table (`None`: its defaults).
+pub fn build_smoother(id: &str, params: Option<&toml::Table>) -> Result<Box<dyn Smoother>> {
+    build_smoother_with(&registry(), id, params)
 }

@@ -6,12 +6,30 @@
 use super::Smoother;
 use crate::cost::CostModel;
 use crate::geom::Vec3;
+use crate::params::{Checked, Range};
 use crate::path::PathModel;
 use crate::scratch::Scratch;
 use crate::termination::Termination;
 
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Shortcut;
+crate::params! {
+    /// Shortcut parameters.
+    pub struct ShortcutParams {
+        /// Greedy passes over the path; a later pass may drop points an earlier one kept,
+        /// since the path it judges has changed.
+        passes: usize = 1, Range::integer(1, 100), "tidepath";
+    }
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct Shortcut {
+    params: ShortcutParams,
+}
+
+impl Shortcut {
+    pub fn new(params: Checked<ShortcutParams>) -> Self {
+        Self { params: params.into_inner() }
+    }
+}
 
 impl Smoother for Shortcut {
     fn id(&self) -> &'static str {
@@ -25,37 +43,51 @@ impl Smoother for Shortcut {
         points: &[Vec3],
         termination: &Termination,
     ) -> Vec<Vec3> {
-        let mut scratch = Scratch::default();
         let mut path = points.to_vec();
-        let mut best = cost.cost(model, &path, &mut scratch);
-        let mut best_feasible = model.assess(&path, &mut scratch.times).feasible();
-        let mut candidate = Vec::with_capacity(path.len());
-        let mut i = 0;
-        while i + 2 < path.len() {
-            for j in (i + 2..path.len()).rev() {
-                // Every candidate is a whole path evaluation: poll before each.
-                if termination.interrupted().is_some() {
-                    return path;
-                }
-                candidate.clear();
-                candidate.extend_from_slice(&path[..=i]);
-                candidate.extend_from_slice(&path[j..]);
-                let feasible = model.assess(&candidate, &mut scratch.times).feasible();
-                if best_feasible && !feasible {
-                    continue;
-                }
-                let c = cost.cost(model, &candidate, &mut scratch);
-                if c <= best || (feasible && !best_feasible) {
-                    std::mem::swap(&mut path, &mut candidate);
-                    best = c;
-                    best_feasible = feasible;
-                    break;
-                }
+        for _ in 0..self.params.passes {
+            let before = path.len();
+            path = one_pass(model, cost, &path, termination);
+            if path.len() == before || termination.interrupted().is_some() {
+                break;
             }
-            i += 1;
         }
         path
     }
+}
+
+/// One greedy pass: from each waypoint, jump to the farthest later one whose bypass is no
+/// costlier and no less feasible.
+fn one_pass(model: &PathModel<'_>, cost: &dyn CostModel, points: &[Vec3], termination: &Termination) -> Vec<Vec3> {
+    let mut scratch = Scratch::default();
+    let mut path = points.to_vec();
+    let mut best = cost.cost(model, &path, &mut scratch);
+    let mut best_feasible = model.assess(&path, &mut scratch.times).feasible();
+    let mut candidate = Vec::with_capacity(path.len());
+    let mut i = 0;
+    while i + 2 < path.len() {
+        for j in (i + 2..path.len()).rev() {
+            // Every candidate is a whole path evaluation: poll before each.
+            if termination.interrupted().is_some() {
+                return path;
+            }
+            candidate.clear();
+            candidate.extend_from_slice(&path[..=i]);
+            candidate.extend_from_slice(&path[j..]);
+            let feasible = model.assess(&candidate, &mut scratch.times).feasible();
+            if best_feasible && !feasible {
+                continue;
+            }
+            let c = cost.cost(model, &candidate, &mut scratch);
+            if c <= best || (feasible && !best_feasible) {
+                std::mem::swap(&mut path, &mut candidate);
+                best = c;
+                best_feasible = feasible;
+                break;
+            }
+        }
+        i += 1;
+    }
+    path
 }
 
 #[cfg(test)]
@@ -81,8 +113,8 @@ mod tests {
             (0..=10).map(|i| Vec3::new(i as f64 * 9.0, 50.0 + if i % 2 == 1 { 5.0 } else { 0.0 }, -50.0)).collect();
         let mission = Mission::new("m", v, p[0], p[10], 0.0);
         let m = PathModel::new(&w, &mission, &s);
-        let cost = GeneralCost::new(GeneralWeights::default()).unwrap();
-        let out = Shortcut.smooth(&m, &cost, &p, &Termination::default());
+        let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
+        let out = Shortcut::default().smooth(&m, &cost, &p, &Termination::default());
         assert_eq!(out, vec![p[0], p[10]]);
     }
 
@@ -99,9 +131,9 @@ mod tests {
         ];
         let mission = Mission::new("m", v, p[0], p[4], 0.0);
         let m = PathModel::new(&w, &mission, &s);
-        let cost = GeneralCost::new(GeneralWeights::default()).unwrap();
+        let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
         let before = cost.cost(&m, &p, &mut Scratch::default());
-        let out = Shortcut.smooth(&m, &cost, &p, &Termination::default());
+        let out = Shortcut::default().smooth(&m, &cost, &p, &Termination::default());
         let mut times = Vec::new();
         assert!(m.assess(&out, &mut times).feasible(), "smoothing broke feasibility: {out:?}");
         assert!(out.len() < p.len() && out.len() > 2, "{out:?}");
