@@ -1,6 +1,5 @@
 //! The files `compare` and `bench functions` write into their output folder.
 
-use std::fmt::Write as _;
 use std::path::Path;
 
 use super::compare::Comparison;
@@ -15,46 +14,54 @@ pub fn results_json(c: &Comparison) -> String {
     serde_json::to_string_pretty(c).expect("comparison serialises") + "\n"
 }
 
-/// One row per run.
-pub fn runs_csv(c: &Comparison) -> String {
-    let mut out = String::from(
-        "problem,planner,run,seed,cost,feasible,length_m,travel_time_s,evaluations,iterations,elapsed_s,stop_reason,status,expansions,samples,motion_checks,goal_distance_m\n",
-    );
+/// One row per run, through the one CSV writer.
+pub fn runs_csv(c: &Comparison) -> Result<String> {
+    use tidepath_io::csv_table::{row, text, writer};
+    let mut w = writer();
+    let header = [
+        "problem",
+        "planner",
+        "run",
+        "seed",
+        "cost",
+        "feasible",
+        "length_m",
+        "travel_time_s",
+        "evaluations",
+        "iterations",
+        "elapsed_s",
+        "stop_reason",
+        "status",
+        "expansions",
+        "samples",
+        "motion_checks",
+        "goal_distance_m",
+    ];
+    row(&mut w, "runs.csv", header)?;
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v}"));
     for r in &c.records {
-        let stop =
-            serde_json::to_value(r.stop_reason).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default();
-        let _ = writeln!(
-            out,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-            csv_field(&r.problem),
-            csv_field(&r.planner),
-            r.run,
-            r.seed,
-            r.cost,
-            r.feasible,
+        let fields = [
+            r.problem.clone(),
+            r.planner.clone(),
+            r.run.to_string(),
+            r.seed.to_string(),
+            r.cost.to_string(),
+            r.feasible.to_string(),
             opt(r.length_m),
             opt(r.travel_time_s),
-            r.evaluations,
-            r.iterations,
-            r.elapsed_s,
-            stop,
-            r.status.map_or("", |s| s.id()),
-            r.expansions,
-            r.samples,
-            r.motion_checks,
-            opt(r.goal_distance_m())
-        );
+            r.evaluations.to_string(),
+            r.iterations.to_string(),
+            r.elapsed_s.to_string(),
+            r.stop_reason.id().to_string(),
+            r.status.map_or("", |s| s.id()).to_string(),
+            r.expansions.to_string(),
+            r.samples.to_string(),
+            r.motion_checks.to_string(),
+            opt(r.goal_distance_m()),
+        ];
+        row(&mut w, "runs.csv", fields)?;
     }
-    out
-}
-
-fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
+    text(w, "runs.csv")
 }
 
 /// Draws a comparison's figures. The plotting layer implements it and the command line passes
@@ -84,9 +91,9 @@ impl FigureRenderer for NoFigures {
 pub const TABLE_FILES: [&str; 3] = ["results.json", "runs.csv", "table.md"];
 
 /// results.json, runs.csv and table.md (the Markdown table printed on stdout).
-pub fn table_files(c: &Comparison) -> Vec<(String, String)> {
-    let texts = [results_json(c), runs_csv(c), table_md(c)];
-    TABLE_FILES.iter().zip(texts).map(|(n, t)| (n.to_string(), t)).collect()
+pub fn table_files(c: &Comparison) -> Result<Vec<(String, String)>> {
+    let texts = [results_json(c), runs_csv(c)?, table_md(c)];
+    Ok(TABLE_FILES.iter().zip(texts).map(|(n, t)| (n.to_string(), t)).collect())
 }
 
 /// The Markdown table, headed by a note when the experiment is incomplete.
@@ -122,7 +129,7 @@ pub fn stage_results(
     scenario: Option<&Scenario>,
     figures: &dyn FigureRenderer,
 ) -> Result<()> {
-    stage_files(out, flag, dir, &table_files(c))?;
+    stage_files(out, flag, dir, &table_files(c)?)?;
     stage_files(out, flag, dir, &figures.render(c, scenario)?)
 }
 

@@ -14,6 +14,8 @@
 
 use chrono::{DateTime, Utc};
 
+use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
+
 use super::PlanReport;
 use tidepath::error::{Error, Result};
 use tidepath::geo::GeoFrame;
@@ -89,7 +91,7 @@ struct Point {
 pub fn export(report: &PlanReport, format: ExportFormat, geo: Georef<'_>) -> Result<String> {
     match format {
         ExportFormat::Json => Ok(report.to_json()),
-        ExportFormat::Csv => Ok(csv(report, geo)),
+        ExportFormat::Csv => csv(report, geo),
         ExportFormat::GeoJson => geojson(report, geo),
         ExportFormat::Kml => kml(report, geo),
         ExportFormat::Gpx => gpx(report, geo),
@@ -143,44 +145,40 @@ fn num(v: f64) -> String {
     }
 }
 
-fn csv(report: &PlanReport, geo: Georef<'_>) -> String {
-    let mut out = String::new();
+fn csv(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
+    let mut w = crate::csv_table::writer();
+    let row = |w: &mut csv::Writer<Vec<u8>>, fields: &[String]| crate::csv_table::row(w, "--out", fields);
     match geo.frame {
         Some(f) => {
-            out.push_str("mission,point,lat,lon,depth_m,time_s,utc\n");
+            row(&mut w, &["mission", "point", "lat", "lon", "depth_m", "time_s", "utc"].map(String::from))?;
             for (name, track) in tracks(report, f) {
                 for (k, p) in track.iter().enumerate() {
-                    out.push_str(&format!(
-                        "{},{k},{:.7},{:.7},{},{},{}\n",
-                        csv_field(&name),
-                        p.lat,
-                        p.lon,
+                    let fields = [
+                        name.clone(),
+                        k.to_string(),
+                        format!("{:.7}", p.lat),
+                        format!("{:.7}", p.lon),
                         num(-p.z + 0.0),
                         num(p.t),
-                        utc(geo.epoch, p.t).unwrap_or_default()
-                    ));
+                        utc(geo.epoch, p.t).unwrap_or_default(),
+                    ];
+                    row(&mut w, &fields)?;
                 }
             }
         }
         None => {
-            out.push_str("mission,point,x_m,y_m,z_m,time_s\n");
+            row(&mut w, &["mission", "point", "x_m", "y_m", "z_m", "time_s"].map(String::from))?;
             for m in &report.missions {
                 for (k, p) in m.points().iter().enumerate() {
                     let t = m.times.get(k).copied().unwrap_or(f64::NAN);
-                    out.push_str(&format!("{},{k},{},{},{},{}\n", csv_field(&m.name), p.x, p.y, p.z, num(t)));
+                    let fields =
+                        [m.name.clone(), k.to_string(), p.x.to_string(), p.y.to_string(), p.z.to_string(), num(t)];
+                    row(&mut w, &fields)?;
                 }
             }
         }
     }
-    out
-}
-
-fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
+    crate::csv_table::text(w, "--out")
 }
 
 fn geojson(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
@@ -223,56 +221,108 @@ fn round7(v: f64) -> f64 {
     (v * 1e7).round() / 1e7
 }
 
-fn xml_escape(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;").replace('\'', "&apos;")
+/// Text that XML 1.0 can hold: characters it forbids even escaped (control characters other
+/// than tab, newline and carriage return) are written as visible escapes, `\u{1b}`; the
+/// writer escapes markup (`&`, `<`, ...).
+fn xml_text(s: &str) -> String {
+    let legal = |c: char| matches!(c, '\t' | '\n' | '\r') || (c >= ' ' && !matches!(c, '\u{FFFE}' | '\u{FFFF}'));
+    if s.chars().all(legal) {
+        return s.to_string();
+    }
+    s.chars().map(|c| if legal(c) { c.to_string() } else { format!("\\u{{{:x}}}", c as u32) }).collect()
+}
+
+type Xml = quick_xml::Writer<Vec<u8>>;
+
+fn xml_error(e: std::io::Error) -> Error {
+    Error::input("--out", format!("writing XML: {e}"))
+}
+
+/// `<tag>text</tag>`.
+fn element(w: &mut Xml, tag: &str, text: &str) -> Result<()> {
+    w.create_element(tag).write_text_content(BytesText::new(&xml_text(text))).map_err(xml_error)?;
+    Ok(())
+}
+
+fn start(w: &mut Xml, tag: &str, attrs: &[(&str, &str)]) -> Result<()> {
+    let mut e = BytesStart::new(tag);
+    for (k, v) in attrs {
+        e.push_attribute((*k, xml_text(v).as_str()));
+    }
+    w.write_event(Event::Start(e)).map_err(xml_error)
+}
+
+fn end(w: &mut Xml, tag: &str) -> Result<()> {
+    w.write_event(Event::End(BytesEnd::new(tag))).map_err(xml_error)
+}
+
+fn xml_document(root: impl FnOnce(&mut Xml) -> Result<()>) -> Result<String> {
+    let mut w = quick_xml::Writer::new_with_indent(Vec::new(), b' ', 1);
+    w.write_event(Event::Decl(BytesDecl::new("1.0", Some("UTF-8"), None))).map_err(xml_error)?;
+    root(&mut w)?;
+    let mut text = String::from_utf8(w.into_inner()).expect("the writer writes the UTF-8 it is given");
+    text.push('\n');
+    Ok(text)
 }
 
 fn kml(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     let f = frame(geo, ".kml")?;
-    let mut out = String::from(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<kml xmlns=\"http://www.opengis.net/kml/2.2\">\n<Document>\n",
-    );
-    out.push_str(&format!(
-        "<name>{}</name>\n<description>{} plan by {}: {}</description>\n",
-        xml_escape(&report.scenario),
-        xml_escape(&report.scenario),
-        xml_escape(&report.planner),
-        xml_escape(&format!("{}: {}", report.status, report.reason))
-    ));
-    out.push_str("<Style id=\"route\"><LineStyle><color>ff0080ff</color><width>3</width></LineStyle></Style>\n");
-    for (name, track) in tracks(report, f) {
-        out.push_str(&format!("<Placemark>\n<name>{}</name>\n<styleUrl>#route</styleUrl>\n", xml_escape(&name)));
-        out.push_str("<LineString>\n<altitudeMode>absolute</altitudeMode>\n<coordinates>\n");
-        for p in &track {
-            out.push_str(&format!("{:.7},{:.7},{}\n", p.lon, p.lat, p.z));
+    xml_document(|w| {
+        start(w, "kml", &[("xmlns", "http://www.opengis.net/kml/2.2")])?;
+        start(w, "Document", &[])?;
+        element(w, "name", &report.scenario)?;
+        let desc = format!("{} plan by {}: {}: {}", report.scenario, report.planner, report.status, report.reason);
+        element(w, "description", &desc)?;
+        start(w, "Style", &[("id", "route")])?;
+        start(w, "LineStyle", &[])?;
+        element(w, "color", "ff0080ff")?;
+        element(w, "width", "3")?;
+        end(w, "LineStyle")?;
+        end(w, "Style")?;
+        for (name, track) in tracks(report, f) {
+            start(w, "Placemark", &[])?;
+            element(w, "name", &name)?;
+            element(w, "styleUrl", "#route")?;
+            start(w, "LineString", &[])?;
+            element(w, "altitudeMode", "absolute")?;
+            let coords: Vec<String> = track.iter().map(|p| format!("{:.7},{:.7},{}", p.lon, p.lat, p.z)).collect();
+            element(w, "coordinates", &coords.join(" "))?;
+            end(w, "LineString")?;
+            end(w, "Placemark")?;
         }
-        out.push_str("</coordinates>\n</LineString>\n</Placemark>\n");
-    }
-    out.push_str("</Document>\n</kml>\n");
-    Ok(out)
+        end(w, "Document")?;
+        end(w, "kml")
+    })
 }
 
 fn gpx(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     let f = frame(geo, ".gpx")?;
-    let mut out = String::from(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<gpx version=\"1.1\" creator=\"tidepath\" xmlns=\"http://www.topografix.com/GPX/1/1\">\n",
-    );
-    out.push_str(&format!(
-        "<metadata><name>{}</name><desc>{}</desc></metadata>\n",
-        xml_escape(&report.scenario),
-        xml_escape(&format!("{} plan: {}: {}", report.planner, report.status, report.reason))
-    ));
-    for (name, track) in tracks(report, f) {
-        out.push_str(&format!("<trk><name>{}</name><trkseg>\n", xml_escape(&name)));
-        for p in &track {
-            out.push_str(&format!("<trkpt lat=\"{:.7}\" lon=\"{:.7}\"><ele>{}</ele>", p.lat, p.lon, p.z));
-            if let Some(t) = utc(geo.epoch, p.t) {
-                out.push_str(&format!("<time>{t}</time>"));
+    xml_document(|w| {
+        start(
+            w,
+            "gpx",
+            &[("version", "1.1"), ("creator", "tidepath"), ("xmlns", "http://www.topografix.com/GPX/1/1")],
+        )?;
+        start(w, "metadata", &[])?;
+        element(w, "name", &report.scenario)?;
+        element(w, "desc", &format!("{} plan: {}: {}", report.planner, report.status, report.reason))?;
+        end(w, "metadata")?;
+        for (name, track) in tracks(report, f) {
+            start(w, "trk", &[])?;
+            element(w, "name", &name)?;
+            start(w, "trkseg", &[])?;
+            for p in &track {
+                let (lat, lon) = (format!("{:.7}", p.lat), format!("{:.7}", p.lon));
+                start(w, "trkpt", &[("lat", &lat), ("lon", &lon)])?;
+                element(w, "ele", &p.z.to_string())?;
+                if let Some(t) = utc(geo.epoch, p.t) {
+                    element(w, "time", &t)?;
+                }
+                end(w, "trkpt")?;
             }
-            out.push_str("</trkpt>\n");
+            end(w, "trkseg")?;
+            end(w, "trk")?;
         }
-        out.push_str("</trkseg></trk>\n");
-    }
-    out.push_str("</gpx>\n");
-    Ok(out)
+        end(w, "gpx")
+    })
 }

@@ -5,12 +5,14 @@
 //! * [`geodata`]: bathymetry (NetCDF, GeoTIFF, ESRI ASCII) and current forecasts (NetCDF),
 //!   read only inside the box a scenario needs;
 //! * [`plan_json`]: the plan file `plan --out` writes and `eval` and `plan --init` read;
-//! * [`export`]: GIS exports (GeoJSON, CSV, KML, GPX);
+//! * [`export`]: GIS exports (GeoJSON, CSV, KML, GPX), written with `geojson`, `csv` and
+//!   `quick-xml` ([`csv_table`] is the one CSV writer);
 //! * [`input`], [`output`]: input files read defensively, output files written all or none.
 //!
 //! The core (`tidepath`) carries no file-format dependency: every reader and writer of a file
 //! format lives here.
 
+pub mod csv_table;
 pub mod export;
 pub mod geodata;
 pub mod input;

@@ -154,3 +154,27 @@ fn iso_departures_give_utc_times() {
     assert_eq!(times.first().map(String::as_str), Some("2025-11-12T06:00:00.000Z"));
     assert_eq!(times.len(), r.missions[0].times.len());
 }
+
+/// A scenario or mission name holding control characters and markup still gives well-formed
+/// XML: XML 1.0 forbids most control characters even escaped, so they are written as visible
+/// escapes, and markup is escaped by the writer.
+#[test]
+fn control_characters_in_names_give_well_formed_xml() {
+    let (s, mut r) = planned("salish");
+    r.scenario = "bad\u{1}name <&> \u{1b}[31m".into();
+    r.missions[0].name = "m\u{7}\"one\"".into();
+    for f in [ExportFormat::Kml, ExportFormat::Gpx] {
+        let text = export(&r, f, geo(&s)).unwrap();
+        let illegal = text.chars().find(|&c| c.is_control() && !matches!(c, '\n' | '\t' | '\r'));
+        assert_eq!(illegal, None, "{f:?}: {text}");
+        // Parses from end to end, and holds the names escaped.
+        xml_points(&text, b"name");
+        assert!(text.contains("<name>bad\\u{1}name &lt;&amp;&gt; \\u{1b}[31m</name>"), "{f:?}: {text}");
+        assert!(
+            text.contains("<name>m\\u{7}&quot;one&quot;</name>") || text.contains("<name>m\\u{7}\"one\"</name>"),
+            "{f:?}: {text}"
+        );
+    }
+    let csv = export(&r, ExportFormat::Csv, geo(&s)).unwrap();
+    assert!(csv.lines().nth(1).unwrap().starts_with("\"m\u{7}\"\"one\"\"\",0,"), "{csv}");
+}
