@@ -151,3 +151,29 @@ fn a_path_that_stops_short_reports_the_distance_left() {
     assert!(!m.feasible);
     assert!(r.reason.contains("short of the goal"), "{}", r.reason);
 }
+
+/// Graph planners report the checks they made and the size of the graph (OMPL's "valid
+/// motions" and graph states), optimizers the motions their evaluations judged.
+#[test]
+fn searches_report_their_checks_and_graph_sizes() {
+    let s = one_disc();
+    let a = plan(&s, "astar");
+    assert!(
+        a.motion_checks >= a.expansions && a.expansions > 0,
+        "{} checks, {} expansions",
+        a.motion_checks,
+        a.expansions
+    );
+    assert!(
+        a.graph_nodes > 0 && a.state_checks >= a.graph_nodes,
+        "{} nodes of {} cells",
+        a.graph_nodes,
+        a.state_checks
+    );
+    let v = plan(&s, "visibility");
+    assert!(v.graph_nodes >= 2 && v.graph_edges >= 1, "{} nodes, {} edges", v.graph_nodes, v.graph_edges);
+    let p = s
+        .plan(&PlanRequest { planner: Some("pso".into()), iterations: Some(3), ..PlanRequest::default() }, &mut |_| {})
+        .unwrap();
+    assert_eq!(p.motion_checks, p.evaluations * (s.encoding.waypoints as u64 + 1));
+}

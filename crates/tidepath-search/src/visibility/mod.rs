@@ -274,19 +274,26 @@ impl Graph<'_> {
 /// `Ok(None)`: proved that no path exists (the graph is complete, so the
 /// search cannot give up early).
 pub fn shortest_path(scene: &Scene, start: Point, goal: Point, arc_step: f64) -> Result<Option<VisPath>, VisError> {
-    shortest_path_within(scene, start, goal, arc_step, &Limits::none())
+    shortest_path_within(scene, start, goal, arc_step, &Limits::none()).map(|(p, _)| p)
 }
 
-/// [`shortest_path`] within `limits`: the stop flag and the deadline are polled during the
-/// graph's construction (quadratic in the obstacles) and its search; when either fires the
-/// answer is [`VisError::Stopped`] (nothing was proved).
+/// The size of the visibility graph a search built.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct GraphSize {
+    pub nodes: usize,
+    pub edges: usize,
+}
+
+/// [`shortest_path`] within `limits`, with the size of the graph it built: the stop flag and
+/// the deadline are polled during the graph's construction (quadratic in the obstacles) and
+/// its search; when either fires the answer is [`VisError::Stopped`] (nothing was proved).
 pub fn shortest_path_within(
     scene: &Scene,
     start: Point,
     goal: Point,
     arc_step: f64,
     limits: &Limits<'_>,
-) -> Result<Option<VisPath>, VisError> {
+) -> Result<(Option<VisPath>, GraphSize), VisError> {
     validate(scene, start, goal, arc_step)?;
     let mut poll = Poll { limits, count: 0 };
     let polys: Vec<Vec<Point>> = scene.polygons.iter().map(|p| ccw(&p.vertices)).collect();
@@ -395,7 +402,8 @@ pub fn shortest_path_within(
     if let Some(r) = limits.interrupted() {
         return Err(VisError::Stopped(r));
     }
-    Ok(route::dijkstra(&g, 0, 1).map(|(length, r)| route::build_path(&g, length, &r, arc_step)))
+    let size = GraphSize { nodes: g.nodes.len(), edges: g.adj.iter().map(Vec::len).sum::<usize>() / 2 };
+    Ok((route::dijkstra(&g, 0, 1).map(|(length, r)| route::build_path(&g, length, &r, arc_step)), size))
 }
 
 fn validate(scene: &Scene, start: Point, goal: Point, arc_step: f64) -> Result<(), VisError> {

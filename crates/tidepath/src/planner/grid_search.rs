@@ -66,6 +66,9 @@ pub struct MissionSearch {
     pub optimal: bool,
     pub expansions: u64,
     pub motion_checks: u64,
+    /// Raster cells judged, and the free ones (the graph's nodes).
+    pub state_checks: u64,
+    pub graph_nodes: u64,
     pub stopped: Option<StopReason>,
     /// The graph searched, for the reason of an `exact` plan.
     pub space: String,
@@ -118,6 +121,8 @@ impl GridSearch {
                 optimal: false,
                 expansions: 0,
                 motion_checks: 0,
+                state_checks: 0,
+                graph_nodes: 0,
                 stopped,
                 space: String::new(),
             });
@@ -134,6 +139,8 @@ impl GridSearch {
             path: simplify(out.path),
             expansions: out.expansions,
             motion_checks: out.motion_checks,
+            state_checks: out.cells,
+            graph_nodes: out.free_cells,
             stopped: out.stopped,
             space,
         })
@@ -192,6 +199,8 @@ impl Planner for GridSearch {
                 Ok(r) => {
                     stats.expansions += r.expansions;
                     stats.motion_checks += r.motion_checks;
+                    stats.state_checks += r.state_checks;
+                    stats.graph_nodes += r.graph_nodes;
                     optimal &= r.optimal;
                     space = r.space;
                     if let Some(reason) = r.stopped {

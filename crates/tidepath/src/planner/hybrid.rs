@@ -75,7 +75,7 @@ impl Hybrid {
                 0.1,
                 &termination.search_limits(None),
             );
-            if let Ok(Some(p)) = p {
+            if let Ok((Some(p), _)) = p {
                 let mut pts: Vec<Vec3> = p.polyline.iter().map(|q| Vec3::new(q[0], q[1], m.start.z)).collect();
                 let n = pts.len();
                 pts[0] = m.start;

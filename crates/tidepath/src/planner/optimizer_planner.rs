@@ -96,6 +96,7 @@ impl Planner for OptimizerPlanner {
         let objective = PathObjective::new(problem, encodings);
         let seeds: Vec<Vec<f64>> = options.init.and_then(|p| objective.encode(p)).into_iter().collect();
         let r = optim::run(self.optimizer.as_mut(), &objective, termination, rng, options.parallel, &seeds, observer);
+        let segments = (self.encoding.waypoints as u64 + 1) * problem.missions.len() as u64;
         // No best point when no evaluation gave a number (all NaN): no path, status infeasible.
         let paths = if r.best_x.len() == objective.dim() {
             objective.decode(&r.best_x)
@@ -109,6 +110,8 @@ impl Planner for OptimizerPlanner {
             stats: SearchStats {
                 iterations: r.iterations,
                 evaluations: r.evaluations,
+                // Each evaluation judges every segment of every mission's path.
+                motion_checks: r.evaluations * segments,
                 history: r.history,
                 stop_reason: r.stop_reason,
                 elapsed: r.elapsed,

@@ -95,6 +95,9 @@ pub struct RasterOutcome {
     pub expansions: u64,
     /// Moves priced (each a motion check by the shared validator).
     pub motion_checks: u64,
+    /// Cells rasterised (each a state judgement) and the free ones among them (the graph's nodes).
+    pub cells: u64,
+    pub free_cells: u64,
     pub stopped: Option<StopReason>,
 }
 
@@ -222,7 +225,16 @@ impl<'a> RasterSearch<'a> {
         } else {
             Vec::new()
         };
-        Ok(RasterOutcome { path, found, expansions: outcome.expansions, motion_checks: checks, stopped })
+        let free_cells = self.raster.conservative.iter().filter(|b| !**b).count() as u64;
+        Ok(RasterOutcome {
+            path,
+            found,
+            expansions: outcome.expansions,
+            motion_checks: checks,
+            cells: self.raster.conservative.len() as u64,
+            free_cells,
+            stopped,
+        })
     }
 
     fn run<G: SearchGrid + LineOfSight>(

@@ -160,6 +160,7 @@ impl Planner for Visibility {
         let mut paths = Vec::new();
         let mut all_exact = true;
         let mut stop_reason = StopReason::Completed;
+        let mut graph = (0u64, 0u64);
         for i in 0..problem.missions.len() {
             let m = &problem.missions[i];
             let limits = termination.search_limits(None);
@@ -168,7 +169,11 @@ impl Planner for Visibility {
                     all_exact &= exact;
                     match shortest_path_within(&scene, [m.start.x, m.start.y], [m.goal.x, m.goal.y], ARC_STEP, &limits)
                     {
-                        Ok(p) => p,
+                        Ok((p, size)) => {
+                            graph.0 += size.nodes as u64;
+                            graph.1 += size.edges as u64;
+                            p
+                        }
                         Err(VisError::Stopped(r)) => {
                             stop_reason = from_search_stop(r);
                             None
@@ -192,7 +197,13 @@ impl Planner for Visibility {
                 }
             }
         }
-        let stats = SearchStats { stop_reason, elapsed: watch.elapsed(), ..SearchStats::default() };
+        let stats = SearchStats {
+            stop_reason,
+            graph_nodes: graph.0,
+            graph_edges: graph.1,
+            elapsed: watch.elapsed(),
+            ..SearchStats::default()
+        };
         // Shortest is cheapest when the cost model charges the same per metre everywhere.
         let per_metre =
             (0..problem.missions.len()).all(|i| problem.cost.cost_per_metre(&problem.path_model(i)).is_some());
