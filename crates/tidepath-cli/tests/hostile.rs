@@ -504,3 +504,44 @@ fn an_output_folder_that_is_a_file_is_refused() {
         &["--out", "not a folder"],
     );
 }
+
+/// Work that grows with the input stays inside the run's clock: a fine raster over thousands
+/// of peaks, thousands of vortices under the composite planner.
+#[test]
+fn rasters_and_references_keep_the_time_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let peaks: Vec<String> = (0..4096)
+        .map(|i| {
+            format!(
+                "{{ x = {}.0, y = {}.0, height = 5.0, sigma_x = 30.0, sigma_y = 30.0 }}",
+                i % 64 * 150,
+                i / 64 * 150
+            )
+        })
+        .collect();
+    let text = format!(
+        "name = \"peaks\"\n[world]\ndimensions = 2\nbounds = {{ min = [0.0, 0.0, 0.0], max = [10000.0, 10000.0, 0.0] }}\n\
+         [world.terrain]\nkind = \"peaks\"\nbase = -50.0\npeaks = [{}]\n[vehicle]\nspeed = 2.0\n\
+         [mission]\nstart = [10.0, 10.0, 0.0]\ngoal = [9990.0, 9990.0, 0.0]\n[planner.params.astar]\ncells = 4096\n",
+        peaks.join(", ")
+    );
+    std::fs::write(d.join("peaks.toml"), text).unwrap();
+    let r = run(d, &["plan", "peaks.toml", "--planner", "astar", "--time-limit", "1"]);
+    assert_eq!(r.code, Some(1), "{}", r.stderr);
+    assert!(r.stdout.contains("stopped by wall_time"), "{}", r.stdout);
+    assert!(r.took < Duration::from_secs(5), "{:?}", r.took);
+    let vortices: Vec<String> = (0..4096)
+        .map(|i| format!("{{ x = {}.0, y = {}.0, strength = 50.0, core_radius = 200.0 }}", i % 64 * 150, i / 64 * 150))
+        .collect();
+    let text = format!(
+        "name = \"eddies\"\n[world]\ndimensions = 2\nbounds = {{ min = [0.0, 0.0, 0.0], max = [10000.0, 10000.0, 0.0] }}\n\
+         [world.current]\nkind = \"vortices\"\nvortices = [{}]\n[vehicle]\nspeed = 2.0\n\
+         [mission]\nstart = [10.0, 10.0, 0.0]\ngoal = [9990.0, 9990.0, 0.0]\n",
+        vortices.join(", ")
+    );
+    std::fs::write(d.join("eddies.toml"), text).unwrap();
+    let r = run(d, &["plan", "eddies.toml", "--planner", "hybrid", "--time-limit", "1"]);
+    assert!(matches!(r.code, Some(0) | Some(1)), "{}", r.stderr);
+    assert!(r.took < Duration::from_secs(5), "{:?}", r.took);
+}
