@@ -47,7 +47,10 @@ fn a_grid_path_costs_the_sum_of_its_motion_costs() {
         [mission]\nstart = [60.0, 300.0, 0.0]\ngoal = [940.0, 300.0, 0.0]\n\
         [cost]\nmodel = \"general\"\nweights = { length = 1.0, time = 2.0, collision = 10.0, turn = 1.0, pitch = 1.0 }\n";
     let s = Scenario::from_toml(text, "stream.toml").unwrap();
-    for id in ["astar", "theta-star"] {
+    // Every raster planner (the planners that count expansions).
+    let raster_planners =
+        tidepath::planner::PLANNERS.iter().filter(|e| e.build.caps.counts_unit(tidepath::planner::Unit::Expansions));
+    for id in raster_planners.map(|e| e.id) {
         let r = plan(&s, id);
         assert!(r.status.is_success(), "{id}: {}", r.reason);
         let cost = s.cost_model().unwrap();
@@ -86,7 +89,7 @@ fn one_invalid_mission_does_not_sink_the_fleet() {
         [[missions]]\nname = \"alpha\"\nstart = [100.0, 100.0, 0.0]\ngoal = [900.0, 100.0, 0.0]\n\
         [[missions]]\nname = \"bravo\"\nstart = [200.0, 800.0, 0.0]\ngoal = [900.0, 800.0, 0.0]\n";
     let s = Scenario::from_toml(text, "pair.toml").unwrap();
-    for id in ["astar", "visibility", "pso", "hybrid"] {
+    for id in tidepath::planner::PLANNERS.iter().map(|e| e.id) {
         let r = plan(&s, id);
         assert_eq!(r.status, Status::InvalidStart, "{id}: {}", r.reason);
         assert!(r.reason.starts_with("mission bravo: missions[1].start"), "{id}: {}", r.reason);

@@ -124,7 +124,8 @@ fn headland_default_plan_is_within_one_percent_of_visibility() {
         let l = r.length_m().unwrap();
         assert!(l <= best * 1.01, "seed {seed}: {l} m against visibility's {best} m");
     }
-    for id in ["pso", "de"] {
+    // Every optimizer over the default (sliced) encoding.
+    for id in tidepath::planner::PLANNERS.iter().filter(|e| e.build.is_optimizer()).map(|e| e.id) {
         let r =
             s.plan(&PlanRequest { planner: Some(id.into()), seed: 1, ..PlanRequest::default() }, &mut |_| {}).unwrap();
         assert_eq!(r.status, Status::Infeasible, "{id}");
@@ -324,7 +325,10 @@ goal = [550.0, 500.0, -90.0]
     let s = Scenario::from_toml(text, "dive.toml").unwrap();
     let steep = s.evaluate(&[s.missions[0].start, s.missions[0].goal]).unwrap();
     assert!(steep.violations.iter().any(|v| v.message.contains("pitch")), "{:?}", steep.violations);
-    for planner in ["astar", "theta-star"] {
+    // Every raster planner (the planners that count expansions) leaves out too-steep moves.
+    let raster_planners =
+        tidepath::planner::PLANNERS.iter().filter(|e| e.build.caps.counts_unit(tidepath::planner::Unit::Expansions));
+    for planner in raster_planners.map(|e| e.id) {
         let r = s.plan(&PlanRequest { planner: Some(planner.into()), ..PlanRequest::default() }, &mut |_| {}).unwrap();
         assert!(r.status.is_success(), "{planner}: {}", r.reason);
         let pts = r.missions[0].points();
