@@ -134,6 +134,9 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(code) => return code,
     };
+    // The Ctrl-C handler is in place before any work starts: a SIGINT that arrived before it
+    // would end the process at once, with nothing written.
+    let _ = stop_flag();
     let result = match cli.command {
         Command::Scenarios => commands::scenarios::list(),
         Command::Scenario(args) => commands::scenarios::show(&args),
