@@ -24,7 +24,7 @@ pub use capabilities::{Capabilities, Dimensions, Fleets, Unit};
 pub use objective::PathObjective;
 pub use optimizer_planner::OptimizerPlanner;
 pub use registry::{build_optimizer, registry, BuildPlanner, Make, PlannerSettings, PLANNERS};
-pub use solve::{solve, MissionPlan, Plan, SolveOptions};
+pub use solve::{solve, Focus, MissionPlan, Plan, SolveOptions};
 pub use status::Status;
 
 use std::time::Duration;

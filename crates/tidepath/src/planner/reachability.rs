@@ -16,9 +16,48 @@ use crate::world::Dims;
 /// Cells on the longer side of the domain.
 const CELLS_LONG_SIDE: f64 = 256.0;
 
-/// `Some(reason)` when mission `i` of `problem` provably has no path. Polls `termination`
-/// (the run's clock): when it fires, nothing is proved and the answer is `None`.
+/// What the check found for one mission.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Reachability {
+    /// No path exists: `reason` says why; `at` is the bottleneck, when one place decides it.
+    Unreachable { reason: String, at: Option<Vec3> },
+    /// The optimistic raster connects start and goal. `bottleneck` is the shallowest place on
+    /// its deepest connection (`None` when no seabed limits it): where a planner that finds no
+    /// route should look first, since a passage narrower than a cell may exist there.
+    Connected { bottleneck: Option<Bottleneck> },
+    /// The clock fired before anything was decided.
+    Undecided,
+}
+
+/// The shallowest place of the optimistic check's deepest connection between start and goal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bottleneck {
+    /// The centre of the cell, at the seabed's deepest point in it.
+    pub at: Vec3,
+    /// Water depth there (m), at the deepest point of the cell.
+    pub water_m: f64,
+    /// Water the vehicle needs: its safety distance below its highest allowed depth (m).
+    pub needed_m: f64,
+    /// The check's cell size (m): passages narrower than this are not resolved.
+    pub cell_m: f64,
+}
+
+/// Whether mission `i` of `problem` provably has no path, and if not, where its deepest
+/// connection pinches. Polls `termination` (the run's clock): when it fires, nothing is
+/// proved and the answer is [`Reachability::Undecided`].
+pub fn check(problem: &Problem<'_>, i: usize, termination: &Termination) -> Reachability {
+    check_inner(problem, i, termination).unwrap_or(Reachability::Undecided)
+}
+
+/// `Some(reason)` when mission `i` of `problem` provably has no path.
 pub fn unreachable(problem: &Problem<'_>, i: usize, termination: &Termination) -> Option<String> {
+    match check(problem, i, termination) {
+        Reachability::Unreachable { reason, .. } => Some(reason),
+        _ => None,
+    }
+}
+
+fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination) -> Option<Reachability> {
     let world = problem.world;
     let m = &problem.missions[i];
     let v = &m.vehicle;
@@ -96,19 +135,28 @@ pub fn unreachable(problem: &Problem<'_>, i: usize, termination: &Termination) -
     let depth: Vec<f64> = depth.iter().map(|d| if d.is_nan() { f64::INFINITY } else { *d }).collect();
     let grid = Grid2::from_blocked(nx, ny, blocked).ok()?;
     let who = if problem.missions.len() > 1 { format!("{}: ", m.name) } else { String::new() };
-    match maximin(&grid, &depth, s, g) {
-        Ok(None) => {
-            Some(format!("{who}goal unreachable: fixed obstacles and the domain's edges separate start and goal"))
-        }
-        Ok(Some(bn)) if bn.value < needed => {
-            let (ci, cj) = (bn.cell % nx, bn.cell / nx);
-            let (x, y) = (b.min.x + (ci as f64 + 0.5) * dx, b.min.y + (cj as f64 + 0.5) * dy);
-            Some(format!(
-                "{who}goal unreachable: the deepest water connecting start and goal is {:.1} m at ({}); this vehicle needs {needed:.1} m",
-                bn.value.max(0.0),
+    let found = maximin(&grid, &depth, s, g).ok()?;
+    let Some(bn) = found else {
+        let reason = format!("{who}goal unreachable: fixed obstacles and the domain's edges separate start and goal");
+        return Some(Reachability::Unreachable { reason, at: None });
+    };
+    let (ci, cj) = (bn.cell % nx, bn.cell / nx);
+    let (x, y) = (b.min.x + (ci as f64 + 0.5) * dx, b.min.y + (cj as f64 + 0.5) * dy);
+    let bottleneck = bn.value.is_finite().then(|| Bottleneck {
+        at: Vec3::new(x, y, -bn.value.max(0.0)),
+        water_m: bn.value.max(0.0),
+        needed_m: needed,
+        cell_m: dx.max(dy),
+    });
+    Some(match bottleneck {
+        Some(k) if bn.value < needed => Reachability::Unreachable {
+            reason: format!(
+                "{who}goal unreachable: the deepest water connecting start and goal is {:.1} m at {}; this vehicle needs {needed:.1} m",
+                k.water_m,
                 world.place(x, y)
-            ))
-        }
-        _ => None,
-    }
+            ),
+            at: Some(k.at),
+        },
+        _ => Reachability::Connected { bottleneck },
+    })
 }

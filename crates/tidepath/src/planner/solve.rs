@@ -2,6 +2,7 @@
 //! missions' start and goal; plan; smooth; judge every path with the shared evaluation; set
 //! the status from those direct checks.
 
+use super::reachability::{self, Bottleneck, Reachability};
 use super::{Claim, Planner, Problem, RunOptions, SearchStats, Status};
 use crate::error::Result;
 use crate::geom::Vec3;
@@ -42,6 +43,17 @@ pub struct MissionPlan {
     /// When the final path stops short of the goal (a planner that ran out of time on the
     /// way), the straight distance left from its last point to the goal (m).
     pub goal_distance_m: Option<f64>,
+    /// The place a failure is about, for figures and messages: the start or goal that is
+    /// invalid, or the bottleneck of the reachability check (where the deepest water any route
+    /// must cross is too shallow, or where a passage narrower than the raster may exist).
+    pub focus: Option<Focus>,
+}
+
+/// A marked place: where a mission's failure is, and a short label for it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Focus {
+    pub at: Vec3,
+    pub label: String,
 }
 
 impl MissionPlan {
@@ -55,6 +67,7 @@ impl MissionPlan {
             status,
             reason,
             goal_distance_m: None,
+            focus: None,
             name: name.to_string(),
             waypoints: Vec::new(),
             smoothed: None,
@@ -106,6 +119,7 @@ pub fn judge(model: &PathModel<'_>, cost: &dyn crate::cost::CostModel, points: &
         status: if violations.is_empty() { Status::Feasible } else { Status::Infeasible },
         reason: violations.first().map_or_else(|| "no constraint violated".to_string(), |v| v.message.clone()),
         goal_distance_m: points.last().map(|p| p.distance(model.goal)).filter(|&d| d > 0.0),
+        focus: None,
         violations,
         metrics: Some(model.metrics(points)),
     }
@@ -141,21 +155,30 @@ pub fn solve(
     let id = planner.id().to_string();
     let n = problem.missions.len();
     let models: Vec<PathModel<'_>> = (0..n).map(|i| problem.path_model(i)).collect();
-    // Missions that cannot be planned, with their status and reason.
-    let mut refused: Vec<Option<(Status, String)>> = vec![None; n];
+    // Missions that cannot be planned, with their status, reason and the place it is about.
+    let mut refused: Vec<Option<(Status, String, Option<Focus>)>> = vec![None; n];
+    let focus = |at: Vec3, label: &str| Some(Focus { at, label: label.to_string() });
     for (i, (m, model)) in problem.missions.iter().zip(&models).enumerate() {
         if let Err(issue) = model.validator.state(m.start, m.departure_time) {
             let why = model.validator.describe(m.start, issue);
-            refused[i] = Some((Status::InvalidStart, format!("{}: {why}", mission_field(problem, i, "start"))));
+            let reason = format!("{}: {why}", mission_field(problem, i, "start"));
+            refused[i] = Some((Status::InvalidStart, reason, focus(m.start, "invalid start")));
         } else if let Err(issue) = model.validator.fixed_state(m.goal) {
             let why = model.validator.describe(m.goal, issue);
-            refused[i] = Some((Status::InvalidGoal, format!("{}: {why}", mission_field(problem, i, "goal"))));
+            let reason = format!("{}: {why}", mission_field(problem, i, "goal"));
+            refused[i] = Some((Status::InvalidGoal, reason, focus(m.goal, "invalid goal")));
         }
     }
+    // Where each plannable mission's optimistic connection pinches, for a failure's reason.
+    let mut bottlenecks: Vec<Option<Bottleneck>> = vec![None; n];
     for (i, r) in refused.iter_mut().enumerate() {
         if r.is_none() {
-            if let Some(reason) = super::reachability::unreachable(problem, i, termination) {
-                *r = Some((Status::Unreachable, reason));
+            match reachability::check(problem, i, termination) {
+                Reachability::Unreachable { reason, at } => {
+                    *r = Some((Status::Unreachable, reason, at.and_then(|a| focus(a, "bottleneck"))));
+                }
+                Reachability::Connected { bottleneck } => bottlenecks[i] = bottleneck,
+                Reachability::Undecided => {}
             }
         }
     }
@@ -166,8 +189,9 @@ pub fn solve(
         .iter()
         .zip(&refused)
         .map(|(m, r)| {
-            let (status, reason) = r.clone().unwrap_or((Status::Infeasible, "the planner returned no path".into()));
-            MissionPlan::unplanned(&m.name, status, reason)
+            let (status, reason, focus) =
+                r.clone().unwrap_or((Status::Infeasible, "the planner returned no path".into(), None));
+            MissionPlan { focus, ..MissionPlan::unplanned(&m.name, status, reason) }
         })
         .collect();
     let mut claim = None;
