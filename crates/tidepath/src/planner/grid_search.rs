@@ -72,6 +72,9 @@ pub struct MissionSearch {
     pub stopped: Option<StopReason>,
     /// The graph searched, for the reason of an `exact` plan.
     pub space: String,
+    /// The search ran to completion and found no path: nothing on this raster connects start
+    /// and goal (a passage narrower than its cells may still exist).
+    pub exhausted: bool,
 }
 
 impl GridSearch {
@@ -125,6 +128,7 @@ impl GridSearch {
                 graph_nodes: 0,
                 stopped,
                 space: String::new(),
+                exhausted: false,
             });
         };
         let out = rs.search(self.any_angle, termination, max_expansions)?;
@@ -135,6 +139,7 @@ impl GridSearch {
             format!("the 8-connected {} x {} raster", r.nx, r.ny)
         };
         Ok(MissionSearch {
+            exhausted: !out.found && out.stopped.is_none(),
             optimal: out.found && !self.any_angle && rs.exact(problem.world),
             path: simplify(out.path),
             expansions: out.expansions,
@@ -193,6 +198,7 @@ impl Planner for GridSearch {
         let mut paths = Vec::new();
         let mut optimal = true;
         let mut space = String::new();
+        let mut no_route = vec![None; problem.missions.len()];
         for i in 0..problem.missions.len() {
             let left = termination.max_expansions.map(|m| m.saturating_sub(stats.expansions));
             match self.search(problem, i, termination, left) {
@@ -202,6 +208,9 @@ impl Planner for GridSearch {
                     stats.state_checks += r.state_checks;
                     stats.graph_nodes += r.graph_nodes;
                     optimal &= r.optimal;
+                    if r.exhausted {
+                        no_route[i] = Some(format!("no route on {} (searched completely)", r.space));
+                    }
                     space = r.space;
                     if let Some(reason) = r.stopped {
                         stats.stop_reason = reason;
@@ -220,11 +229,15 @@ impl Planner for GridSearch {
             Objective::Length => "length",
             Objective::Time => "travel time",
         };
-        let claim = optimal.then(|| Claim::Optimal {
-            space: format!("on {space}"),
-            scenario_cost: self.params.objective == Objective::Cost,
-            objective: what.to_string(),
-        });
+        let claim = if optimal {
+            Some(Claim::Optimal {
+                space: format!("on {space}"),
+                scenario_cost: self.params.objective == Objective::Cost,
+                objective: what.to_string(),
+            })
+        } else {
+            no_route.iter().any(Option::is_some).then_some(Claim::NoRoute(no_route))
+        };
         PlannerOutput { paths, claim, stats }
     }
 }

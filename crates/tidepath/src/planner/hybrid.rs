@@ -64,8 +64,14 @@ impl Hybrid {
     }
 
     /// The reference path of mission `i` within `termination` (a share of the run's time on
-    /// the run's clock), and the expansions it took.
-    fn reference(&self, problem: &Problem<'_>, i: usize, termination: &Termination) -> (Vec<Vec3>, u64) {
+    /// the run's clock), the expansions it took, and why there is none when the search found
+    /// none (the straight line then stands in for it).
+    fn reference(
+        &self,
+        problem: &Problem<'_>,
+        i: usize,
+        termination: &Termination,
+    ) -> (Vec<Vec3>, u64, Option<String>) {
         let m = &problem.missions[i];
         if let Ok((scene, _)) = visibility::scene(problem, i, true) {
             let p = tidepath_search::visibility::shortest_path_within(
@@ -80,7 +86,7 @@ impl Hybrid {
                 let n = pts.len();
                 pts[0] = m.start;
                 pts[n - 1] = m.goal;
-                return (pts, 0);
+                return (pts, 0, None);
             }
         }
         // Any-angle Theta* in 2-D; in 3-D plain A* (Theta*'s line-of-sight relaxations make
@@ -91,10 +97,18 @@ impl Hybrid {
         let grid = GridParams { cells: self.params.cells, ..GridParams::default() };
         let grid = grid.checked("planner.params.hybrid").expect("hybrid's cells are the grid planners' range");
         let search = GridSearch::new(id, grid, any_angle);
+        let straight = vec![m.start, m.goal];
         match search.search(problem, i, termination, None) {
-            Ok(r) if r.path.len() >= 2 => (r.path, r.expansions),
-            Ok(r) => (vec![m.start, m.goal], r.expansions),
-            Err(_) => (vec![m.start, m.goal], 0),
+            Ok(r) if r.path.len() >= 2 => (r.path, r.expansions, None),
+            Ok(r) if r.exhausted => {
+                let why = format!("its reference search ({id}) found no route on {} (searched completely)", r.space);
+                (straight, r.expansions, Some(why))
+            }
+            Ok(r) => {
+                let why = format!("its reference search ({id}) stopped before finding a route");
+                (straight, r.expansions, Some(why))
+            }
+            Err(e) => (straight, 0, Some(format!("its reference search ({id}) failed: {e}"))),
         }
     }
 }
@@ -141,17 +155,19 @@ impl Planner for Hybrid {
         let watch = termination.start();
         let mut expansions = 0;
         let mut refs = Vec::new();
+        let mut no_route = Vec::new();
         let missions = problem.missions.len();
         for i in 0..missions {
             // The references share half of the time left, mission by mission; the refinement
             // then has what remains, on the same clock.
             let share = 0.5 / (missions - i) as f64;
-            let (path, e) = match options.init.and_then(|p| p.get(i)).filter(|p| p.len() >= 2) {
-                Some(p) => (p.clone(), 0),
+            let (path, e, why) = match options.init.and_then(|p| p.get(i)).filter(|p| p.len() >= 2) {
+                Some(p) => (p.clone(), 0, None),
                 None => self.reference(problem, i, &termination.share_of_remaining(share)),
             };
             expansions += e;
             refs.push(path);
+            no_route.push(why);
         }
         // One free encoding per mission, with enough waypoints for the reference's turns.
         let mut encodings: Vec<Box<dyn Encoding>> = Vec::new();
@@ -172,12 +188,9 @@ impl Planner for Hybrid {
             encodings.push(Box::new(enc));
         }
         let objective = PathObjective::new(problem, encodings);
+        let claim = no_route.iter().any(Option::is_some).then_some(Claim::NoRoute(no_route));
         let Some(base) = objective.encode(&seeds_pts) else {
-            return PlannerOutput {
-                paths: refs,
-                claim: None,
-                stats: SearchStats { expansions, ..SearchStats::default() },
-            };
+            return PlannerOutput { paths: refs, claim, stats: SearchStats { expansions, ..SearchStats::default() } };
         };
         // The reference and jittered copies (up to about one raster cell, in the encoding's
         // normalised units).
@@ -206,7 +219,7 @@ impl Planner for Hybrid {
             .collect();
         PlannerOutput {
             paths,
-            claim: None::<Claim>,
+            claim,
             stats: SearchStats {
                 iterations: r.iterations,
                 evaluations: r.evaluations,

@@ -78,6 +78,10 @@ pub enum Claim {
     Unreachable(String),
     /// A line to add to the reason when the plan is not feasible (why this planner failed).
     Hint(String),
+    /// The planner's own search found no route for some missions (indexed like `paths`): the
+    /// text says which search and on what ("no route on the 8-connected 200 x 200 raster").
+    /// It leads the reason of such a mission, before any violation of a fallback path.
+    NoRoute(Vec<Option<String>>),
 }
 
 /// Search statistics, in each planner's own units.

@@ -21,9 +21,12 @@ const CELLS_LONG_SIDE: f64 = 256.0;
 pub enum Reachability {
     /// No path exists: `reason` says why; `at` is the bottleneck, when one place decides it.
     Unreachable { reason: String, at: Option<Vec3> },
-    /// The optimistic raster connects start and goal. `bottleneck` is the shallowest place on
-    /// its deepest connection (`None` when no seabed limits it): where a planner that finds no
-    /// route should look first, since a passage narrower than a cell may exist there.
+    /// The optimistic raster connects start and goal. `bottleneck` is where a planner that
+    /// finds no route should look first: on the connection with the most water *surely* there
+    /// (each cell's shallowest point, none where an obstacle may reach in), the cell where that
+    /// runs short of what the vehicle needs (a passage narrower than a cell may exist there);
+    /// if none runs short, the shallowest place of the deepest connection (`None` when no
+    /// seabed or obstacle limits it).
     Connected { bottleneck: Option<Bottleneck> },
     /// The clock fired before anything was decided.
     Undecided,
@@ -34,12 +37,15 @@ pub enum Reachability {
 pub struct Bottleneck {
     /// The centre of the cell, at the seabed's deepest point in it.
     pub at: Vec3,
-    /// Water depth there (m), at the deepest point of the cell.
+    /// Water depth there (m), at the deepest point of the cell (infinite without a seabed).
     pub water_m: f64,
     /// Water the vehicle needs: its safety distance below its highest allowed depth (m).
     pub needed_m: f64,
     /// The check's cell size (m): passages narrower than this are not resolved.
     pub cell_m: f64,
+    /// Whether this is where the water surely there runs short (a passage narrower than a
+    /// cell may exist here), rather than the deepest connection's shallowest place.
+    pub pinch: bool,
 }
 
 /// Whether mission `i` of `problem` provably has no path, and if not, where its deepest
@@ -78,6 +84,9 @@ fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination) -> Op
     let needed = safety - z_top;
     let mut depth = vec![0.0; nx * ny];
     let mut blocked = vec![false; nx * ny];
+    // Cells a fixed obstacle (with the safety distance) may reach into in the usable water
+    // column: a conservative raster may block them even where the check finds water.
+    let mut touched = vec![false; nx * ny];
     if !matches!(world.terrain, crate::world::Terrain::None) {
         for j in 0..ny {
             termination.interrupted().is_none().then_some(())?;
@@ -101,9 +110,11 @@ fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination) -> Op
         };
         let (i0, i1) = cells(bb.min.x - safety, bb.max.x + safety, b.min.x, dx, nx);
         let (j0, j1) = cells(bb.min.y - safety, bb.max.y + safety, b.min.y, dy, ny);
+        let in_column = bb.max.z + safety >= z_bottom && bb.min.z - safety <= z_top;
         for j in j0..=j1 {
             termination.interrupted().is_none().then_some(())?;
             for ii in i0..=i1 {
+                touched[ii + nx * j] |= in_column;
                 let (xa, ya) = (b.min.x + ii as f64 * dx, b.min.y + j as f64 * dy);
                 let (xb, yb) = (xa + dx, ya + dy);
                 let corners = [
@@ -140,23 +151,49 @@ fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination) -> Op
         let reason = format!("{who}goal unreachable: fixed obstacles and the domain's edges separate start and goal");
         return Some(Reachability::Unreachable { reason, at: None });
     };
-    let (ci, cj) = (bn.cell % nx, bn.cell / nx);
-    let (x, y) = (b.min.x + (ci as f64 + 0.5) * dx, b.min.y + (cj as f64 + 0.5) * dy);
-    let bottleneck = bn.value.is_finite().then(|| Bottleneck {
-        at: Vec3::new(x, y, -bn.value.max(0.0)),
-        water_m: bn.value.max(0.0),
-        needed_m: needed,
-        cell_m: dx.max(dy),
-    });
-    Some(match bottleneck {
-        Some(k) if bn.value < needed => Reachability::Unreachable {
+    let centre = |cell: usize| {
+        let (ci, cj) = (cell % nx, cell / nx);
+        (b.min.x + (ci as f64 + 0.5) * dx, b.min.y + (cj as f64 + 0.5) * dy)
+    };
+    let bottleneck_at = |cell: usize, pinch: bool| {
+        let (x, y) = centre(cell);
+        let water = depth[cell].max(0.0);
+        Bottleneck { at: Vec3::new(x, y, -water), water_m: water, needed_m: needed, cell_m: dx.max(dy), pinch }
+    };
+    if bn.value < needed {
+        let (x, y) = centre(bn.cell);
+        return Some(Reachability::Unreachable {
             reason: format!(
                 "{who}goal unreachable: the deepest water connecting start and goal is {:.1} m at {}; this vehicle needs {needed:.1} m",
-                k.water_m,
+                bn.value.max(0.0),
                 world.place(x, y)
             ),
-            at: Some(k.at),
-        },
-        _ => Reachability::Connected { bottleneck },
-    })
+            at: Some(bottleneck_at(bn.cell, false).at),
+        });
+    }
+    // Connected. Where would a conservative search get stuck? Rank the same connections by
+    // the water they surely have (a cell's shallowest point, none where an obstacle may reach
+    // in): the best of them pinches where a passage is narrower than a cell, if anywhere.
+    let mut sure = vec![f64::INFINITY; nx * ny];
+    if !matches!(world.terrain, crate::world::Terrain::None) {
+        for (k, v) in sure.iter_mut().enumerate() {
+            if k % nx == 0 {
+                termination.interrupted().is_none().then_some(())?;
+            }
+            let (xa, ya) = (b.min.x + (k % nx) as f64 * dx, b.min.y + (k / nx) as f64 * dy);
+            let w = -world.terrain.max_elevation_in(xa, ya, xa + dx, ya + dy);
+            *v = if w.is_nan() { f64::INFINITY } else { w };
+        }
+    }
+    for (v, &t) in sure.iter_mut().zip(&touched) {
+        if t {
+            *v = v.min(0.0);
+        }
+    }
+    let tight = maximin(&grid, &sure, s, g).ok().flatten().filter(|t| t.value < needed);
+    let bottleneck = match tight {
+        Some(t) => Some(bottleneck_at(t.cell, true)),
+        None => bn.value.is_finite().then(|| bottleneck_at(bn.cell, false)),
+    };
+    Some(Reachability::Connected { bottleneck })
 }

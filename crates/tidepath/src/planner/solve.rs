@@ -237,11 +237,15 @@ pub fn solve(
         claim = out.claim;
     }
     // Each planned mission's status from its own direct checks and why the run stopped.
-    for &i in &planned {
+    for (k, &i) in planned.iter().enumerate() {
         let m = &mut missions[i];
         if matches!(m.status, Status::Unreachable) {
             continue;
         }
+        let no_route = match &claim {
+            Some(Claim::NoRoute(v)) => v.get(k).cloned().flatten(),
+            _ => None,
+        };
         let left = m.goal_distance_m.map_or(String::new(), |d| format!("; it stops {d:.1} m short of the goal"));
         (m.status, m.reason) = if m.feasible {
             match &claim {
@@ -257,11 +261,21 @@ pub fn solve(
                 _ => (Status::Feasible, "no constraint violated".to_string()),
             }
         } else {
-            let first = first_problem(m);
-            let hint = match &claim {
+            let mut first = first_problem(m);
+            let mut hint = match &claim {
                 Some(Claim::Hint(h)) => format!("; {h}"),
                 _ => String::new(),
             };
+            // No route found by a search that is not a proof: say what was searched, then
+            // where the optimistic check connects start and goal (the place to look).
+            if no_route.is_some() || m.waypoints.len() < 2 {
+                let (text, at) = not_proved(problem, bottlenecks[i].as_ref(), no_route.is_some());
+                hint = format!("; {text}");
+                m.focus = at.map(|at| Focus { at, label: "narrowest passage".into() });
+            }
+            if let Some(why) = &no_route {
+                first = if m.waypoints.len() >= 2 { format!("{why}; its fallback path: {first}") } else { why.clone() };
+            }
             match stats.stop_reason {
                 StopReason::WallTime => (
                     Status::Timeout,
@@ -317,6 +331,28 @@ fn optimal_reason(cost: &dyn crate::cost::CostModel, what: &str, space: &str) ->
             path_level.join(", ")
         )
     }
+}
+
+/// "not proved unreachable: ..." for a mission whose planner found no route, naming where the
+/// optimistic check's deepest connection pinches, and that place.
+fn not_proved(problem: &Problem<'_>, bn: Option<&Bottleneck>, raster: bool) -> (String, Option<Vec3>) {
+    let finer = if raster { ": try a finer raster" } else { "" };
+    let Some(b) = bn else {
+        return ("not proved unreachable: the optimistic check connects start and goal".to_string(), None);
+    };
+    let place = problem.world.place(b.at.x, b.at.y);
+    let text = if b.pinch {
+        format!(
+            "not proved unreachable: the optimistic check connects start and goal through {place} with {:.1} m of water (this vehicle needs {:.1} m); a passage narrower than {:.0} m may exist there{finer}",
+            b.water_m, b.needed_m, b.cell_m
+        )
+    } else {
+        format!(
+            "not proved unreachable: the optimistic check connects start and goal with {:.0} m cells, its shallowest place {place} with {:.1} m of water (this vehicle needs {:.1} m); a passage narrower than the planner's cells may exist along it{finer}",
+            b.cell_m, b.water_m, b.needed_m
+        )
+    };
+    (text, Some(b.at))
 }
 
 fn is_interruption(r: StopReason) -> bool {
