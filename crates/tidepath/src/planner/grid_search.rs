@@ -199,7 +199,7 @@ impl Planner for GridSearch {
         let mut optimal = true;
         let mut space = String::new();
         let mut no_route = vec![None; problem.missions.len()];
-        for i in 0..problem.missions.len() {
+        for (i, no_route) in no_route.iter_mut().enumerate() {
             let left = termination.max_expansions.map(|m| m.saturating_sub(stats.expansions));
             match self.search(problem, i, termination, left) {
                 Ok(r) => {
@@ -209,7 +209,7 @@ impl Planner for GridSearch {
                     stats.graph_nodes += r.graph_nodes;
                     optimal &= r.optimal;
                     if r.exhausted {
-                        no_route[i] = Some(format!("no route on {} (searched completely)", r.space));
+                        *no_route = Some(format!("no route on {} (searched completely)", r.space));
                     }
                     space = r.space;
                     if let Some(reason) = r.stopped {
