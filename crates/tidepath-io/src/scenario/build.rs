@@ -198,7 +198,8 @@ fn build_missions(
             check_endpoint("mission.start", start, world)?;
             check_endpoint("mission.goal", goal, world)?;
             check_time("mission.departure_time", m.departure_time)?;
-            out.push(Mission::new("mission", vehicle.clone(), start, goal, m.departure_time));
+            let name = m.name.as_deref().unwrap_or("mission");
+            out.push(Mission::new(name, vehicle.clone(), start, goal, m.departure_time));
         }
         (None, false) => {
             if spec.missions.len() > MAX_MISSIONS {
@@ -513,13 +514,8 @@ pub const MAX_SPEED: f64 = 100.0;
 /// Start and goal must lie in the domain: a point outside it is a typo (exit 2). Whether it
 /// lies in the seabed or an obstacle is the plan's status (`invalid-start`, `invalid-goal`).
 fn check_endpoint(field: &str, p: Vec3, world: &World) -> Result<()> {
-    let shown = format!("[{}, {}, {}]", p.x, p.y, p.z);
     if !world.bounds.contains(p) {
-        let (lo, hi) = (world.bounds.min, world.bounds.max);
-        return Err(Error::input(
-            field,
-            format!("{shown} is outside the domain [{}, {}, {}] .. [{}, {}, {}]", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z),
-        ));
+        return Err(Error::input(field, format!("{} is outside the domain {}", world.point(p), world.domain_text())));
     }
     Ok(())
 }

@@ -48,7 +48,7 @@ impl PathModel<'_> {
                 Some(p) => push(
                     ViolationKind::Endpoint,
                     i,
-                    format!("waypoint {i} {} is not the mission {what} {}", fmt_point(*p), fmt_point(want)),
+                    format!("waypoint {i} ({}) is not the mission {what} ({})", world.point(*p), world.point(want)),
                 ),
                 None => push(ViolationKind::Endpoint, 0, format!("the path is empty: it does not reach the {what}")),
             }
@@ -64,7 +64,7 @@ impl PathModel<'_> {
                     ),
                 ),
                 Err(_) => {
-                    push(ViolationKind::Bounds, i, format!("waypoint {i} {} is outside the domain", fmt_point(*p)))
+                    push(ViolationKind::Bounds, i, format!("waypoint {i} ({}) is outside the domain", world.point(*p)))
                 }
                 Ok(()) => {}
             }
@@ -164,8 +164,4 @@ fn obstacle_clearance(model: &PathModel<'_>, k: usize, a: Vec3, b: Vec3, t0: f64
     let mut best = f64::INFINITY;
     model.validator.for_each_piece(a, b, t0, |pc| best = best.min(o.segment_clearance(pc.p0, pc.p1, pc.t0, pc.t1)));
     best
-}
-
-fn fmt_point(p: Vec3) -> String {
-    format!("[{:.1}, {:.1}, {:.1}]", p.x, p.y, p.z)
 }

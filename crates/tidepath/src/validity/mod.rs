@@ -188,17 +188,13 @@ impl<'a> Validator<'a> {
     /// One line saying why state `p` is invalid, for messages.
     pub fn describe(&self, p: Vec3, issue: StateIssue) -> String {
         let shown = match self.world.frame {
-            Some(_) => format!("({}, z {:.1} m)", self.world.place(p.x, p.y), p.z),
-            None => format!("[{}, {}, {}]", p.x, p.y, p.z),
+            Some(_) => format!("({})", self.world.point(p)),
+            None => self.world.point(p),
         };
         let veh = self.vehicle;
         match issue {
             StateIssue::OutsideDomain => {
-                let (lo, hi) = (self.world.bounds.min, self.world.bounds.max);
-                format!(
-                    "{shown} is outside the domain [{}, {}, {}] .. [{}, {}, {}]",
-                    lo.x, lo.y, lo.z, hi.x, hi.y, hi.z
-                )
+                format!("{shown} is outside the domain {}", self.world.domain_text())
             }
             StateIssue::OutsideDepthBand => {
                 format!("{shown} is outside the vehicle's depth band [{}, {}] m", veh.depth_min, veh.depth_max)
