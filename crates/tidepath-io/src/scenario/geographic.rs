@@ -147,6 +147,9 @@ fn resolve_clock(spec: &mut ScenarioSpec) -> Result<Option<DateTime<Utc>>> {
 }
 
 /// Projects every geographic position of `spec` and loads its bathymetry file.
+/// A box obstacle's cover this much larger than its lon/lat box gets a note (1 %).
+const EXCESS_NOTE: f64 = 0.01;
+
 fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) -> Result<GeoFrame> {
     let [w, s, z0] = spec.world.bounds.min;
     let [e, n, z1] = spec.world.bounds.max;
@@ -154,18 +157,8 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
     let lon0 = tidepath::geo::normalise_lon(w + geo_box.width() / 2.0);
     let frame = GeoFrame::new(lon0, (s + n) / 2.0, "world.bounds")?;
     // The metric rectangle holding the projected box.
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    const EDGE_SAMPLES: usize = 64;
-    for k in 0..=EDGE_SAMPLES {
-        let f = k as f64 / EDGE_SAMPLES as f64;
-        let lon = w + f * geo_box.width();
-        let lat = s + f * (n - s);
-        for (x, y) in [(lon, s), (lon, n), (w, lat), (geo_box.east_unwrapped(), lat)] {
-            let (px, py) = frame.forward(x, y, "world.bounds")?;
-            lo = [lo[0].min(px), lo[1].min(py)];
-            hi = [hi[0].max(px), hi[1].max(py)];
-        }
-    }
+    let domain = super::geo_cover::cover(&frame, &geo_box, "world.bounds")?;
+    let (lo, hi) = (domain.lo, domain.hi);
     spec.world.bounds.min = [lo[0], lo[1], z0];
     spec.world.bounds.max = [hi[0], hi[1], z1];
     let point = |p: &mut P3, field: &str| -> Result<()> {
@@ -195,16 +188,17 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
             }
         }
         if let (Some(a), Some(b)) = (&mut o.min, &mut o.max) {
+            // A lon/lat rectangle: covered whole, edges included (see geo_cover).
             let field = format!("world.obstacles[{i}]");
-            let corners = [(a[0], a[1]), (a[0], b[1]), (b[0], a[1]), (b[0], b[1])];
-            let mut xs = Vec::new();
-            for (lon, lat) in corners {
-                xs.push(frame.forward(lon, lat, &field)?);
+            let lonlat = GeoBox::new(a[0], a[1], b[0], b[1], &field)?;
+            let c = super::geo_cover::cover(&frame, &lonlat, &field)?;
+            if c.excess() > EXCESS_NOTE {
+                warnings.push(format!(
+                    "{field}: the lon/lat box is covered by a frame-aligned box {:.1} % larger (meridians converge, parallels curve); split it into smaller boxes for a tighter zone",
+                    100.0 * c.excess()
+                ));
             }
-            a[0] = xs.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
-            a[1] = xs.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
-            b[0] = xs.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
-            b[1] = xs.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+            [a[0], a[1], b[0], b[1]] = [c.lo[0], c.lo[1], c.hi[0], c.hi[1]];
             if let (None, Some(v)) = (&o.center, &mut o.velocity) {
                 let (vx, vy) = east_north_to_frame(&frame, (a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0, v[0], v[1]);
                 *v = [vx, vy, v[2]];

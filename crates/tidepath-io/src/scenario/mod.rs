@@ -7,9 +7,11 @@
 mod build;
 mod builtin;
 mod cells;
+mod geo_cover;
 pub mod geographic;
 mod jet;
 mod plan;
+mod route_frame;
 pub mod spec;
 
 pub use build::Scenario;
