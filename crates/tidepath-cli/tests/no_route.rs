@@ -54,7 +54,7 @@ fn a_search_that_finds_no_route_names_the_optimistic_connection() {
     );
     // The place named is the passage at the box's north-east corner (124.00 W, 48.37 N).
     assert!(
-        line.contains("not proved unreachable: the optimistic check connects start and goal through 48.37"),
+        line.contains("not proved unreachable: the optimistic check connects start and goal through (48.37"),
         "{line}"
     );
     assert!(line.contains(" N, 124.00") && line.contains("try a finer raster"), "{line}");

@@ -127,7 +127,9 @@ fn tracks(report: &PlanReport, f: &GeoFrame) -> Vec<(String, Vec<Point>)> {
         .collect()
 }
 
-fn utc(epoch: Option<DateTime<Utc>>, t: f64) -> Option<String> {
+/// The instant `t` seconds after `epoch` in UTC (RFC 3339, milliseconds), when there is an
+/// epoch and the instant is on the calendar.
+pub fn utc(epoch: Option<DateTime<Utc>>, t: f64) -> Option<String> {
     let e = epoch?;
     if !t.is_finite() {
         return None;
@@ -137,12 +139,26 @@ fn utc(epoch: Option<DateTime<Utc>>, t: f64) -> Option<String> {
     Some(at.to_rfc3339_opts(chrono::SecondsFormat::Millis, true))
 }
 
-fn num(v: f64) -> String {
-    if v.is_finite() {
-        format!("{v}")
-    } else {
-        String::new()
+/// `v` with at most `decimals` decimals and no trailing zeros ("40.63", "12", "-0.5"): depth
+/// to the centimetre, times to the millisecond, metres to the millimetre; blank when not a
+/// number.
+fn fixed(v: f64, decimals: usize) -> String {
+    if !v.is_finite() {
+        return String::new();
     }
+    let s = format!("{v:.decimals$}");
+    let s = if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.') } else { &s };
+    if s == "-0" {
+        "0".to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+/// Rounds to `decimals` decimals, for numbers written by serializers.
+fn round_to(v: f64, decimals: i32) -> f64 {
+    let f = 10f64.powi(decimals);
+    (v * f).round() / f + 0.0
 }
 
 fn csv(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
@@ -158,8 +174,8 @@ fn csv(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
                         k.to_string(),
                         format!("{:.7}", p.lat),
                         format!("{:.7}", p.lon),
-                        num(-p.z + 0.0),
-                        num(p.t),
+                        fixed(-p.z + 0.0, 2),
+                        fixed(p.t, 3),
                         utc(geo.epoch, p.t).unwrap_or_default(),
                     ];
                     row(&mut w, &fields)?;
@@ -172,7 +188,7 @@ fn csv(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
                 for (k, p) in m.points().iter().enumerate() {
                     let t = m.times.get(k).copied().unwrap_or(f64::NAN);
                     let fields =
-                        [m.name.clone(), k.to_string(), p.x.to_string(), p.y.to_string(), p.z.to_string(), num(t)];
+                        [m.name.clone(), k.to_string(), fixed(p.x, 3), fixed(p.y, 3), fixed(p.z, 3), fixed(t, 3)];
                     row(&mut w, &fields)?;
                 }
             }
@@ -186,20 +202,20 @@ fn geojson(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     let f = frame(geo, ".geojson")?;
     let mut features = Vec::new();
     for (name, track) in tracks(report, f) {
-        let coords: Vec<[f64; 3]> = track.iter().map(|p| [round7(p.lon), round7(p.lat), p.z]).collect();
+        let coords: Vec<[f64; 3]> = track.iter().map(|p| [round7(p.lon), round7(p.lat), round_to(p.z, 2)]).collect();
         let mut props = JsonObject::new();
         props.insert("name".into(), JsonValue::from(name));
         props.insert("scenario".into(), JsonValue::from(report.scenario.clone()));
         props.insert("planner".into(), JsonValue::from(report.planner.clone()));
         props.insert("status".into(), JsonValue::from(report.status.to_string()));
         props.insert("feasible".into(), JsonValue::from(report.feasible));
-        props.insert("depth_m".into(), JsonValue::from(track.iter().map(|p| -p.z + 0.0).collect::<Vec<_>>()));
+        props.insert("depth_m".into(), JsonValue::from(track.iter().map(|p| round_to(-p.z, 2)).collect::<Vec<_>>()));
         props.insert(
             "time_s".into(),
             JsonValue::from(
                 track
                     .iter()
-                    .map(|p| if p.t.is_finite() { JsonValue::from(p.t) } else { JsonValue::Null })
+                    .map(|p| if p.t.is_finite() { JsonValue::from(round_to(p.t, 3)) } else { JsonValue::Null })
                     .collect::<Vec<_>>(),
             ),
         );
@@ -265,10 +281,20 @@ fn xml_document(root: impl FnOnce(&mut Xml) -> Result<()>) -> Result<String> {
     Ok(text)
 }
 
+/// KML 2.2 for Google Earth: per mission a route placemark (a `gx:Track` with a time per
+/// point when the scenario has an epoch, so the globe's time slider plays it, else a
+/// `LineString`) and start and goal placemarks. Altitudes are `absolute`: below the sea
+/// surface for an AUV, which Google Earth shows once its view goes under water
+/// (docs/data-formats.md says how).
 fn kml(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     let f = frame(geo, ".kml")?;
+    let coord = |p: &Point, sep: &str| format!("{:.7}{sep}{:.7}{sep}{}", p.lon, p.lat, fixed(p.z, 2));
     xml_document(|w| {
-        start(w, "kml", &[("xmlns", "http://www.opengis.net/kml/2.2")])?;
+        start(
+            w,
+            "kml",
+            &[("xmlns", "http://www.opengis.net/kml/2.2"), ("xmlns:gx", "http://www.google.com/kml/ext/2.2")],
+        )?;
         start(w, "Document", &[])?;
         element(w, "name", &report.scenario)?;
         let desc = format!("{} plan by {}: {}: {}", report.scenario, report.planner, report.status, report.reason);
@@ -283,12 +309,38 @@ fn kml(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
             start(w, "Placemark", &[])?;
             element(w, "name", &name)?;
             element(w, "styleUrl", "#route")?;
-            start(w, "LineString", &[])?;
-            element(w, "altitudeMode", "absolute")?;
-            let coords: Vec<String> = track.iter().map(|p| format!("{:.7},{:.7},{}", p.lon, p.lat, p.z)).collect();
-            element(w, "coordinates", &coords.join(" "))?;
-            end(w, "LineString")?;
+            let times: Option<Vec<String>> = track.iter().map(|p| utc(geo.epoch, p.t)).collect();
+            match times {
+                Some(times) if !track.is_empty() => {
+                    start(w, "gx:Track", &[])?;
+                    element(w, "altitudeMode", "absolute")?;
+                    for t in &times {
+                        element(w, "when", t)?;
+                    }
+                    for p in &track {
+                        element(w, "gx:coord", &coord(p, " "))?;
+                    }
+                    end(w, "gx:Track")?;
+                }
+                _ => {
+                    start(w, "LineString", &[])?;
+                    element(w, "altitudeMode", "absolute")?;
+                    let coords: Vec<String> = track.iter().map(|p| coord(p, ",")).collect();
+                    element(w, "coordinates", &coords.join(" "))?;
+                    end(w, "LineString")?;
+                }
+            }
             end(w, "Placemark")?;
+            let ends = [("start", track.first()), ("goal", track.last())];
+            for (what, p) in ends.into_iter().filter_map(|(w, p)| p.map(|p| (w, p))) {
+                start(w, "Placemark", &[])?;
+                element(w, "name", &format!("{name} {what}"))?;
+                start(w, "Point", &[])?;
+                element(w, "altitudeMode", "absolute")?;
+                element(w, "coordinates", &coord(p, ","))?;
+                end(w, "Point")?;
+                end(w, "Placemark")?;
+            }
         }
         end(w, "Document")?;
         end(w, "kml")
@@ -314,7 +366,7 @@ fn gpx(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
             for p in &track {
                 let (lat, lon) = (format!("{:.7}", p.lat), format!("{:.7}", p.lon));
                 start(w, "trkpt", &[("lat", &lat), ("lon", &lon)])?;
-                element(w, "ele", &p.z.to_string())?;
+                element(w, "ele", &fixed(p.z, 2))?;
                 if let Some(t) = utc(geo.epoch, p.t) {
                     element(w, "time", &t)?;
                 }

@@ -18,7 +18,8 @@ pub mod geodata;
 pub mod input;
 pub mod output;
 pub mod plan_json;
+pub mod routes;
 pub mod scenario;
 
 pub use output::{write_atomic, OutputId, Outputs};
-pub use plan_json::{MissionReport, PlanAbout, PlanFile, PlanReport, PLAN_FORMAT_VERSION};
+pub use plan_json::{MissionReport, PlanAbout, PlanFile, PlanReport, RouteFrame, PLAN_FORMAT_VERSION};

@@ -74,6 +74,13 @@ pub struct PlanReport {
     /// Always "tidepath-plan".
     pub format: String,
     pub version: u32,
+    /// The frame of every `waypoints` and `smoothed` list: always "metres" (the scenario's
+    /// frame, x east, y north, z up) in files tidepath writes; a geographic plan gives its
+    /// paths in longitude, latitude and depth in `geographic.paths` as well. A hand-written
+    /// file may say "lonlat" instead (waypoints [longitude, latitude, depth_m], depth
+    /// positive down).
+    #[serde(default = "metres")]
+    pub frame: String,
     pub tidepath_version: String,
     pub planner: String,
     pub seed: u64,
@@ -134,6 +141,10 @@ pub struct GeoReport {
     pub paths: Vec<Vec<[f64; 3]>>,
 }
 
+fn metres() -> String {
+    "metres".into()
+}
+
 fn finite(v: f64) -> Option<f64> {
     v.is_finite().then_some(v)
 }
@@ -173,6 +184,7 @@ impl PlanReport {
         Self {
             format: "tidepath-plan".into(),
             version: PLAN_FORMAT_VERSION,
+            frame: metres(),
             tidepath_version: env!("CARGO_PKG_VERSION").to_string(),
             planner: plan.planner.clone(),
             seed: about.seed,
@@ -290,6 +302,19 @@ struct RawPlanFile {
     planner: Option<String>,
     #[serde(default)]
     scenario: Option<String>,
+    #[serde(default)]
+    format: Option<String>,
+    #[serde(default)]
+    frame: Option<String>,
+}
+
+/// The frame of a route file's points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RouteFrame {
+    /// The scenario's frame: x east, y north, z up (m).
+    Metres,
+    /// Longitude and latitude (degrees); points hold (longitude, latitude, elevation = -depth).
+    LonLat,
 }
 
 /// A plan file as read: one final path per mission.
@@ -303,6 +328,11 @@ pub struct PlanFile {
     pub scenario: Option<String>,
     /// 1 for files without a version field.
     pub version: u32,
+    /// The frame the file's points are in; `None` when a hand-written plan JSON does not say
+    /// (metres for a local scenario; a geographic one asks).
+    pub frame: Option<RouteFrame>,
+    /// "plan JSON", "GeoJSON", "GPX", "KML" or "CSV".
+    pub format: &'static str,
 }
 
 impl PlanFile {
@@ -340,6 +370,18 @@ impl PlanFile {
                 format!("{version} is newer than this tidepath reads ({PLAN_FORMAT_VERSION})"),
             ));
         }
+        let frame = match raw.frame.as_deref() {
+            Some("lonlat") => Some(RouteFrame::LonLat),
+            Some("metres" | "meters") => Some(RouteFrame::Metres),
+            Some(other) => {
+                return Err(Error::input(
+                    format!("{source}: frame"),
+                    format!("must be \"metres\" or \"lonlat\", got \"{}\"", tidepath::text::one_line(other)),
+                ))
+            }
+            // Files tidepath writes are in metres.
+            None => (raw.format.as_deref() == Some("tidepath-plan")).then_some(RouteFrame::Metres),
+        };
         let entries: Vec<(String, PathEntry)> = match (raw.missions, raw.waypoints) {
             (Some(_), Some(_)) => {
                 return Err(Error::input(source, "give either `missions` or top-level `waypoints`, not both"));
@@ -379,10 +421,26 @@ impl PlanFile {
                 }
             }
             let _ = e.cost;
-            let pts = e.smoothed.as_ref().unwrap_or(&e.waypoints).iter().map(|p| Vec3::from_array(*p)).collect();
+            // Longitude/latitude files give depth positive down; points hold the elevation.
+            let sign = if frame == Some(RouteFrame::LonLat) { -1.0 } else { 1.0 };
+            let pts = e
+                .smoothed
+                .as_ref()
+                .unwrap_or(&e.waypoints)
+                .iter()
+                .map(|p| Vec3::new(p[0], p[1], sign * p[2]))
+                .collect();
             paths.push((e.name, pts));
         }
-        Ok(Self { paths, cost: raw.cost, planner: raw.planner, scenario: raw.scenario, version })
+        Ok(Self {
+            paths,
+            cost: raw.cost,
+            planner: raw.planner,
+            scenario: raw.scenario,
+            version,
+            frame,
+            format: "plan JSON",
+        })
     }
 
     /// The final path of each mission.

@@ -65,8 +65,12 @@ fn csv_gives_back_the_points() {
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     let lonlat: Vec<(f64, f64)> = rows.iter().map(|c| (c[3].parse().unwrap(), c[2].parse().unwrap())).collect();
     assert_same_points(&s, &r, &lonlat);
+    // Times to the millisecond.
     let times: Vec<f64> = rows.iter().map(|c| c[5].parse().unwrap()).collect();
-    assert_eq!(times, r.missions[0].times);
+    assert_eq!(times.len(), r.missions[0].times.len());
+    for (t, want) in times.iter().zip(&r.missions[0].times) {
+        assert!((t - want).abs() <= 0.0005 + 1e-9, "{t} vs {want}");
+    }
     // A local scenario gives metres.
     let (d, rd) = planned("headland");
     let local = export(&rd, ExportFormat::Csv, geo(&d)).unwrap();
@@ -107,7 +111,10 @@ fn xml_points(text: &str, tag: &[u8]) -> Vec<String> {
 fn kml_and_gpx_are_well_formed_and_hold_the_points() {
     let (s, r) = planned("salish");
     let kml = export(&r, ExportFormat::Kml, geo(&s)).unwrap();
-    let coords = xml_points(&kml, b"coordinates").join("\n");
+    // The route's coordinates, then the start and goal placemarks' points.
+    let all = xml_points(&kml, b"coordinates");
+    assert_eq!(all.len(), 3, "{kml}");
+    let coords = &all[0];
     let lonlat: Vec<(f64, f64)> = coords
         .split_whitespace()
         .map(|c| {
@@ -177,4 +184,35 @@ fn control_characters_in_names_give_well_formed_xml() {
     }
     let csv = export(&r, ExportFormat::Csv, geo(&s)).unwrap();
     assert!(csv.lines().nth(1).unwrap().starts_with("\"m\u{7}\"\"one\"\"\",0,"), "{csv}");
+}
+
+/// Every export is read back as a route (the way `eval` and `plan --init` read it) and gives
+/// the plan's points again, depth included: to a centimetre in latitude/longitude and depth.
+#[test]
+fn every_export_reads_back_as_the_same_route() {
+    for name in ["salish", "salish-strait"] {
+        let s = load(name).unwrap();
+        let r = s
+            .plan(&PlanRequest { planner: Some("astar".into()), seed: 1, ..PlanRequest::default() }, &mut |_| {})
+            .unwrap();
+        let want = r.missions[0].points();
+        let dir = tempfile::tempdir().unwrap();
+        for (ext, f) in [
+            ("json", ExportFormat::Json),
+            ("geojson", ExportFormat::GeoJson),
+            ("gpx", ExportFormat::Gpx),
+            ("kml", ExportFormat::Kml),
+            ("csv", ExportFormat::Csv),
+        ] {
+            let path = dir.path().join(format!("route.{ext}"));
+            std::fs::write(&path, export(&r, f, geo(&s)).unwrap()).unwrap();
+            let file = tidepath_io::routes::read(&path).unwrap();
+            let got = s.route_paths(&file, "route").unwrap();
+            assert_eq!(got.len(), 1);
+            assert_eq!(got[0].len(), want.len(), "{name} {ext}");
+            for (p, q) in got[0].iter().zip(&want) {
+                assert!(p.distance(*q) < 0.03, "{name} {ext}: {p:?} vs {q:?}");
+            }
+        }
+    }
 }

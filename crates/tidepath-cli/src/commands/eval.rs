@@ -3,7 +3,6 @@ use std::path::PathBuf;
 use clap::Args;
 use tidepath::Error;
 use tidepath_io::scenario;
-use tidepath_io::PlanFile;
 
 use crate::Outcome;
 
@@ -11,8 +10,11 @@ use crate::Outcome;
 pub struct EvalArgs {
     /// A built-in scenario name or a scenario TOML file.
     pub scenario: String,
-    /// A plan JSON (as written by `tidepath plan --out`, any format version); a hand-written
-    /// file needs only `waypoints` (one mission) or `missions[].waypoints`.
+    /// The routes: a plan JSON (as written by `tidepath plan --out`, any format version; a
+    /// hand-written one needs only `waypoints` or `missions[].waypoints`, and `"frame":
+    /// "lonlat"` for [longitude, latitude, depth] points) or an export as written or edited in
+    /// GIS tools (.geojson, .gpx, .kml, .csv); one route per mission, in order. Times in the
+    /// file are ignored: routes are flown on the scenario's clock.
     pub plan: PathBuf,
 }
 
@@ -21,10 +23,15 @@ const MAX_LISTED: usize = 100;
 
 pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
-    let plan = PlanFile::read(&args.plan)?;
-    let judged = scenario.evaluate_paths(&plan.mission_paths())?;
+    let plan = tidepath_io::routes::read(&args.plan)?;
+    let paths = scenario.route_paths(&plan, &args.plan.display().to_string())?;
+    let judged = scenario.evaluate_paths(&paths)?;
 
-    println!("{} — {} (plan format version {})", scenario.name, args.plan.display(), plan.version);
+    let what = match plan.format {
+        "plan JSON" => format!("plan format version {}", plan.version),
+        other => format!("{other}; its times, if any, ignored"),
+    };
+    println!("{} — {} ({what})", scenario.name, args.plan.display());
     let mut total = 0.0;
     let several = judged.len() > 1;
     for m in &judged {
@@ -42,11 +49,12 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
         println!("{indent}  {:<12} {:>14.9}", "total", m.cost);
         if let Some(x) = &m.metrics {
             let clearance = x.min_clearance_m.map_or("n/a".to_string(), |c| format!("{c:.1} m"));
+            let arrival = m.times.last().copied().unwrap_or(f64::NAN);
+            let utc = tidepath_io::export::utc(scenario.epoch, arrival).map_or(String::new(), |u| format!(", {u}"));
             println!(
-                "{indent}length {:.1} m; travel time {:.1} s (arrives at t = {:.1} s); max turn {:.1} deg; max pitch {:.1} deg; min clearance {clearance}",
+                "{indent}length {:.1} m; travel time {:.1} s (arrives at t = {arrival:.1} s{utc}); max turn {:.1} deg; max pitch {:.1} deg; min clearance {clearance}",
                 x.length_m,
                 x.travel_time_s,
-                m.times.last().copied().unwrap_or(f64::NAN),
                 x.max_turn_deg,
                 x.max_pitch_deg
             );

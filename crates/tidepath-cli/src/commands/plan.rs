@@ -4,7 +4,7 @@ use clap::Args;
 use tidepath::Error;
 use tidepath_io::export::{export, ExportFormat, Georef};
 use tidepath_io::scenario::{self, PlanRequest, Scenario};
-use tidepath_io::{Outputs, PlanFile, PlanReport};
+use tidepath_io::{Outputs, PlanReport};
 use tidepath_plot::{render_plan_figure, PlanFigure, PlotPath};
 
 use crate::progress::DelayedBar;
@@ -73,7 +73,10 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         f.check(scenario.frame.as_ref(), "--out")?;
     }
     let init = match &args.init {
-        Some(path) => Some(PlanFile::read(path)?.mission_paths()),
+        Some(path) => {
+            let file = tidepath_io::routes::read(path)?;
+            Some(scenario.route_paths(&file, &path.display().to_string())?)
+        }
         None => None,
     };
     let (smoother, smoother_params) = match args.smooth.as_deref().map(super::budget::parse_smooth).transpose()? {
@@ -213,12 +216,13 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
         }
         if let Some(x) = &m.metrics {
             println!("{indent}length         {:.1} m", x.length_m);
+            let arrival = m.times.last().copied().unwrap_or(f64::NAN);
+            let utc = tidepath_io::export::utc(scenario.epoch, arrival).map_or(String::new(), |u| format!(" ({u})"));
             println!(
-                "{indent}travel time    {:.1} s ({}, {} model); arrives at t = {:.1} s",
+                "{indent}travel time    {:.1} s ({}, {} model); arrives at t = {arrival:.1} s{utc}",
                 x.travel_time_s,
                 hms(x.travel_time_s),
                 r.travel_time_model,
-                m.times.last().copied().unwrap_or(f64::NAN)
             );
             let clearance = x.min_clearance_m.map_or("n/a".to_string(), |c| format!("{c:.1} m"));
             println!(

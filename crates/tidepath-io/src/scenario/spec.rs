@@ -336,6 +336,9 @@ impl Default for VehicleSpec {
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MissionSpec {
+    /// The mission's name in plans, messages and exports ("mission" when not given).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
     pub start: P3,
     pub goal: P3,
     #[serde(default)]

@@ -164,7 +164,7 @@ fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination) -> Op
         let (x, y) = centre(bn.cell);
         return Some(Reachability::Unreachable {
             reason: format!(
-                "{who}goal unreachable: the deepest water connecting start and goal is {:.1} m at {}; this vehicle needs {needed:.1} m",
+                "{who}goal unreachable: the deepest water connecting start and goal is {:.1} m at ({}); this vehicle needs {needed:.1} m",
                 bn.value.max(0.0),
                 world.place(x, y)
             ),

@@ -343,12 +343,12 @@ fn not_proved(problem: &Problem<'_>, bn: Option<&Bottleneck>, raster: bool) -> (
     let place = problem.world.place(b.at.x, b.at.y);
     let text = if b.pinch {
         format!(
-            "not proved unreachable: the optimistic check connects start and goal through {place} with {:.1} m of water (this vehicle needs {:.1} m); a passage narrower than {:.0} m may exist there{finer}",
+            "not proved unreachable: the optimistic check connects start and goal through ({place}) with {:.1} m of water (this vehicle needs {:.1} m); a passage narrower than {:.0} m may exist there{finer}",
             b.water_m, b.needed_m, b.cell_m
         )
     } else {
         format!(
-            "not proved unreachable: the optimistic check connects start and goal with {:.0} m cells, its shallowest place {place} with {:.1} m of water (this vehicle needs {:.1} m); a passage narrower than the planner's cells may exist along it{finer}",
+            "not proved unreachable: the optimistic check connects start and goal with {:.0} m cells, its shallowest place ({place}) with {:.1} m of water (this vehicle needs {:.1} m); a passage narrower than the planner's cells may exist along it{finer}",
             b.cell_m, b.water_m, b.needed_m
         )
     };
