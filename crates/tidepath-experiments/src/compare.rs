@@ -74,6 +74,9 @@ pub struct Reference {
     pub cost: f64,
     pub length_m: Option<f64>,
     pub travel_time_s: Option<f64>,
+    /// Its path (the first mission's final path), for the paths figure.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub waypoints: Vec<[f64; 3]>,
 }
 
 /// The reference planner for a scenario when none is named: the exact visibility graph where
@@ -117,6 +120,7 @@ pub fn run_reference(
         cost: r.cost_value(),
         length_m: r.length_m(),
         travel_time_s: r.travel_time_s(),
+        waypoints: r.missions.first().map(|m| m.points().iter().map(|p| p.to_array()).collect()).unwrap_or_default(),
     }))
 }
 

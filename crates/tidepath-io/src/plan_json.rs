@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use tidepath::error::{Error, Result};
 use tidepath::geom::Vec3;
 use tidepath::path::{Metrics, Violation};
-use tidepath::planner::{MissionPlan, Plan, Status};
+use tidepath::planner::{Focus, MissionPlan, Plan, Status};
 use tidepath::termination::StopReason;
 
 /// The version this build writes. Version 3 adds each mission's own status, reason and
@@ -63,6 +63,10 @@ pub struct MissionReport {
     /// The distance (m) from the path's last point to the goal when it stops short.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub goal_distance_m: Option<f64>,
+    /// The place this mission's failure is about (an invalid start or goal, a bottleneck), for
+    /// the figure drawn by the same run; not written to the file.
+    #[serde(skip)]
+    pub focus: Option<Focus>,
 }
 
 fn unknown_status() -> Status {
@@ -169,6 +173,7 @@ impl MissionReport {
             status: m.status,
             reason: m.reason.clone(),
             goal_distance_m: m.goal_distance_m,
+            focus: m.focus.clone(),
         }
     }
 

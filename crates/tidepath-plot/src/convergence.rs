@@ -8,7 +8,7 @@
 
 use std::ops::Range;
 
-use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
+use plotters::coord::ranged1d::{AsRangedCoord, BoldPoints, Ranged, ValueFormatter};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -30,12 +30,15 @@ pub struct ConvergenceSeries<'a> {
     /// Palette index ([`style::path_color`]); `None` takes the series' position in the list.
     /// Set it when a series belongs to a path drawn elsewhere, so both share a colour.
     pub color: Option<usize>,
+    /// Mark the first finite point with a hollow diamond: something ran before the iterations
+    /// (a composite planner's reference search) and the curve starts from its result.
+    pub mark_first: bool,
 }
 
 impl<'a> ConvergenceSeries<'a> {
     /// A single run's history: a line without a band.
     pub fn line(label: impl Into<String>, values: &'a [f64]) -> Self {
-        Self { label: label.into(), median: values, band: None, color: None }
+        Self { label: label.into(), median: values, band: None, color: None, mark_first: false }
     }
 }
 
@@ -82,13 +85,20 @@ fn all_values<'a>(series: &'a [ConvergenceSeries]) -> impl Iterator<Item = f64> 
 }
 
 /// Draws the convergence panel: one median line per series over its band, on a log10 axis
-/// when [`wants_log_scale`] says so.
-pub fn draw_convergence<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, series: &[ConvergenceSeries]) -> Result<()> {
+/// when [`wants_log_scale`] says so. `start_note` says what iteration 0 is when something ran
+/// before the iterations; the first point of each series with `mark_first` is then marked and
+/// the note is its legend entry.
+pub fn draw_convergence<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    series: &[ConvergenceSeries],
+    start_note: Option<&str>,
+) -> Result<()> {
     let body = style::caption(area, "Convergence")?;
     let finite: Vec<f64> = all_values(series).filter(|v| v.is_finite()).collect();
     if finite.is_empty() {
         let (w, h) = body.dim_in_pixel();
-        let msg = if series.is_empty() { "no convergence history" } else { "no finite cost recorded" };
+        let empty = series.iter().all(|s| s.median.is_empty() && s.band.is_none());
+        let msg = if empty { "no convergence history" } else { "no finite cost recorded" };
         let style = style::font(style::AXIS_DESC_PX).color(&style::MUTED).pos(Pos::new(HPos::Center, VPos::Center));
         body.draw(&Text::new(msg, (w as i32 / 2, h as i32 / 3), style)).map_err(plot_err)?;
         return Ok(());
@@ -96,16 +106,23 @@ pub fn draw_convergence<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, serie
     let lo = finite.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let n = series.iter().map(|s| s.median.len()).max().unwrap_or(0);
-    let x_range = 0.0..(n.saturating_sub(1) as f64).max(1.0);
+    let x_range = x_range(n, series);
 
+    // Each swatch is drawn as its curve is: a line, over its own band when it has one.
     let mut legend: Vec<LegendEntry> = series
         .iter()
         .enumerate()
-        .map(|(i, s)| LegendEntry::new(&s.label, Swatch::Line { color: series_color(i, s).to_rgba(), width: 2 }))
+        .map(|(i, s)| {
+            let c = series_color(i, s);
+            let swatch =
+                if s.band.is_some() { Swatch::LineOverBand(c) } else { Swatch::Line { color: c.to_rgba(), width: 2 } };
+            let label =
+                if s.band.is_some() { format!("{} (median, interquartile range)", s.label) } else { s.label.clone() };
+            LegendEntry::new(label, swatch)
+        })
         .collect();
-    if series.iter().any(|s| s.band.is_some()) {
-        legend
-            .push(LegendEntry::new("interquartile range", Swatch::Fill { color: style::MUTED.mix(0.25), edge: None }));
+    if let (Some(note), Some((i, s))) = (start_note, series.iter().enumerate().find(|(_, s)| s.mark_first)) {
+        legend.push(LegendEntry::new(note, Swatch::Diamond(series_color(i, s))));
     }
     let (w, _) = body.dim_in_pixel();
     let legend_h = style::legend_height(&legend, w.saturating_sub(70));
@@ -124,6 +141,14 @@ pub fn draw_convergence<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, serie
     }
 }
 
+/// Iterations 0 to n - 1, with a little room left of 0 when a first point is marked so its
+/// diamond is not cut in half by the axis.
+pub(crate) fn x_range(n: usize, series: &[ConvergenceSeries]) -> Range<f64> {
+    let end = (n.saturating_sub(1) as f64).max(1.0);
+    let start = if series.iter().any(|s| s.mark_first) { -0.025 * end } else { 0.0 };
+    start..end
+}
+
 pub(crate) fn build<'a, DB, Y>(
     area: &'a DrawingArea<DB, Shift>,
     x: Range<f64>,
@@ -138,11 +163,14 @@ where
 {
     // Iterations are whole numbers: at most one label per iteration.
     let x_labels = ((x.end - x.start).round() as usize + 1).min(8);
+    // Room for the widest tick label and the axis description beside it, never on it.
+    let y: Y::CoordDescType = y.into();
+    let y_label_w = style::label_area_for(y.key_points(BoldPoints(Y_LABELS)).iter().map(&y_fmt));
     let mut chart = ChartBuilder::on(area)
         .margin_right(18)
         .margin_top(6)
         .x_label_area_size(46)
-        .y_label_area_size(64)
+        .y_label_area_size(y_label_w)
         .build_cartesian_2d(x, y)
         .map_err(plot_err)?;
     chart
@@ -197,6 +225,15 @@ where
             }
         }
     }
+    // Diamonds last, on top of every line.
+    let area = chart.plotting_area().strip_coord_spec();
+    let base = chart.plotting_area().get_base_pixel();
+    for (i, s) in series.iter().enumerate().filter(|(_, s)| s.mark_first) {
+        if let Some(k) = s.median.iter().position(|v| v.is_finite()) {
+            let (px, py) = chart.backend_coord(&(k as f64, y(s.median[k])));
+            style::draw_diamond(&area, (px - base.0, py - base.1), series_color(i, s))?;
+        }
+    }
     Ok(())
 }
 
@@ -220,19 +257,35 @@ mod tests {
         upper[10] = f64::INFINITY;
         let other: Vec<f64> = median.iter().map(|m| m * 1.2 + 2.0).collect();
         let series = [
-            ConvergenceSeries { label: "pso".into(), median: &median, band: Some((&lower, &upper)), color: None },
-            ConvergenceSeries { label: "de".into(), median: &other, band: Some((&lower, &other)), color: Some(3) },
+            ConvergenceSeries {
+                label: "pso".into(),
+                median: &median,
+                band: Some((&lower, &upper)),
+                color: None,
+                mark_first: false,
+            },
+            ConvergenceSeries {
+                label: "de".into(),
+                median: &other,
+                band: Some((&lower, &other)),
+                color: Some(3),
+                mark_first: true,
+            },
         ];
         let mut svg = String::new();
         {
             let root = SVGBackend::with_string(&mut svg, (700, 420)).into_drawing_area();
             root.fill(&WHITE).unwrap();
-            draw_convergence(&root, &series).unwrap();
+            draw_convergence(&root, &series, Some("iteration 0: refinement starts from the reference")).unwrap();
             root.present().unwrap();
         }
-        // The infinite upper value splits the first band in two.
-        assert_eq!(svg.matches("<polygon").count(), 3);
-        assert!(svg.contains("interquartile range") && svg.contains("best cost (log scale)"));
+        // The infinite upper value splits the first band in two: three band pieces, and the
+        // diamond's white fill on the curve and in the legend.
+        assert_eq!(svg.matches("<polygon").count(), 5);
+        assert!(svg.contains("pso (median, interquartile range)") && svg.contains("best cost (log scale)"));
+        // The marked series' first point: a hollow diamond in its colour (palette 3, violet).
+        assert!(svg.contains("iteration 0: refinement starts from the reference"));
+        assert!(svg.contains(r##"stroke="#8C50C8" stroke-width="2" points="##), "no diamond in violet");
         assert!(!svg.contains("NaN"));
         if let Some(dir) = std::env::var_os("TIDEPATH_PLOT_DIR") {
             std::fs::create_dir_all(&dir).unwrap();

@@ -12,13 +12,18 @@ use super::style::{self, plot_err};
 use super::PlotPath;
 use tidepath::error::{Error, Result};
 use tidepath::geom::Vec3;
+use tidepath::planner::Focus;
 use tidepath::world::World;
+
+use chrono::{DateTime, Utc};
 
 /// Width and height of the plan figure in pixels.
 pub const FIGURE_SIZE: (u32, u32) = (1400, 800);
 const TITLE_H: u32 = 40;
 
 /// Everything shown in the figure of one plan (or of several planners' plans on one world).
+/// The plan view and the profile draw from it too, so every figure of a world (a plan's, a
+/// comparison's best paths) marks the same things the same way.
 #[derive(Clone, Debug)]
 pub struct PlanFigure<'a> {
     /// Figure title, e.g. "demo — pso, seed 1: cost 1.234, feasible".
@@ -28,11 +33,46 @@ pub struct PlanFigure<'a> {
     pub goal: Vec3,
     /// Time (s) at which obstacles and currents are drawn, normally the departure time.
     pub time: f64,
+    /// The UTC instant of the scenario clock's zero, when the scenario has one: the time a
+    /// time-varying field is drawn at is then stated as a date.
+    pub epoch: Option<DateTime<Utc>>,
+    /// The vehicle's safety distance (m): drawn as a dashed halo around obstacles and as a
+    /// line above the seabed on the profile, since that is what a path is judged against.
+    pub safety_distance: f64,
+    /// Places a failure is about (an invalid start or goal, a bottleneck), marked and
+    /// labelled on the plan view.
+    pub focus: Vec<Focus>,
     /// One or more paths; they keep the same colour in every panel.
     pub paths: Vec<PlotPath<'a>>,
+    /// A reference path (a comparison's or `plan --reference`'s), drawn dashed beneath the
+    /// others so the gaps the numbers report can be seen.
+    pub reference: Option<PlotPath<'a>>,
     /// Best cost per iteration, per label; a history labelled like a path gets its colour.
     /// May be empty.
     pub histories: Vec<(String, &'a [f64])>,
+    /// What iteration 0 of the histories is when something ran before the iterations (a
+    /// composite planner's reference search, a warm start), marked on the convergence panel.
+    pub history_start: Option<String>,
+}
+
+impl<'a> PlanFigure<'a> {
+    /// A figure of `world` with nothing on it but the start and goal; fill in the rest.
+    pub fn new(title: impl Into<String>, world: &'a World, start: Vec3, goal: Vec3, time: f64) -> Self {
+        Self {
+            title: title.into(),
+            world,
+            start,
+            goal,
+            time,
+            epoch: None,
+            safety_distance: 0.0,
+            focus: Vec::new(),
+            paths: Vec::new(),
+            reference: None,
+            histories: Vec::new(),
+            history_start: None,
+        }
+    }
 }
 
 /// Renders the figure to SVG text.
@@ -52,7 +92,7 @@ pub fn render_plan_figure(fig: &PlanFigure) -> Result<String> {
         let avail_h = (h - TITLE_H) as f64 - 200.0;
         let left_w = (aspect * avail_h + 200.0).clamp(540.0, 900.0) as u32;
         let (left, right) = body.split_horizontally(left_w);
-        draw_plan_view(&left, fig.world, fig.time, &fig.paths, fig.start, fig.goal)?;
+        draw_plan_view(&left, fig)?;
 
         let right = right.margin(0, 0, 16, 0);
         // A history takes the colour of the path with the same label, whatever the order.
@@ -62,6 +102,7 @@ pub fn render_plan_figure(fig: &PlanFigure) -> Result<String> {
             .enumerate()
             .map(|(i, (label, values))| ConvergenceSeries {
                 color: Some(fig.paths.iter().position(|p| &p.label == label).unwrap_or(i)),
+                mark_first: fig.history_start.is_some(),
                 ..ConvergenceSeries::line(label.clone(), values)
             })
             .collect();
@@ -69,8 +110,8 @@ pub fn render_plan_figure(fig: &PlanFigure) -> Result<String> {
         // without one the convergence panel says so.
         let (_, rh) = right.dim_in_pixel();
         let (top, bottom) = right.split_vertically(rh / 2);
-        draw_profile(&top.margin(0, 10, 0, 0), fig.world, &fig.paths)?;
-        draw_convergence(&bottom.margin(10, 0, 0, 0), &series)?;
+        draw_profile(&top.margin(0, 10, 0, 0), fig)?;
+        draw_convergence(&bottom.margin(10, 0, 0, 0), &series, fig.history_start.as_deref())?;
         root.present().map_err(plot_err)?;
     }
     Ok(svg)

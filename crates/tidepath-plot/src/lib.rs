@@ -10,11 +10,14 @@
 pub mod contour;
 mod convergence;
 pub mod experiment;
+mod failure;
 mod figure;
 mod log_axis;
+mod obstacle_look;
 mod plan_view;
 mod profile;
 pub mod style;
+mod time_label;
 
 pub use convergence::{draw_convergence, wants_log_scale, ConvergenceSeries};
 pub use experiment::ExperimentFigures;
@@ -23,16 +26,31 @@ pub use plan_view::draw_plan_view;
 pub use profile::draw_profile;
 
 use tidepath::geom::Vec3;
+use tidepath::path::Violation;
 
 /// A labelled path to draw; borrowed so callers can plot plans without copying waypoints.
 #[derive(Clone, Debug)]
 pub struct PlotPath<'a> {
     pub label: String,
     pub points: &'a [Vec3],
+    /// Arrival time (s, scenario clock) at each point, when known: moving obstacles are then
+    /// drawn where they are when the vehicle passes, with time marks on both.
+    pub times: &'a [f64],
+    /// The constraints this path violates (indices into `points`), marked on the plan view
+    /// and the profile so a figure of an infeasible path shows where it fails.
+    pub violations: &'a [Violation],
 }
 
 impl<'a> PlotPath<'a> {
     pub fn new(label: impl Into<String>, points: &'a [Vec3]) -> Self {
-        Self { label: label.into(), points }
+        Self { label: label.into(), points, times: &[], violations: &[] }
+    }
+
+    pub fn with_times(self, times: &'a [f64]) -> Self {
+        Self { times, ..self }
+    }
+
+    pub fn with_violations(self, violations: &'a [Violation]) -> Self {
+        Self { violations, ..self }
     }
 }

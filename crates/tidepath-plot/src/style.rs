@@ -39,6 +39,11 @@ pub const CONTOUR: RGBAColor = RGBAColor(10, 25, 45, 0.45);
 pub const COAST: RGBColor = RGBColor(70, 50, 25);
 pub const NO_TERRAIN_BG: RGBColor = RGBColor(236, 244, 250);
 pub const SURFACE: RGBColor = RGBColor(90, 160, 220);
+/// What went wrong: violated segments and waypoints, the place a failure is about. Apart from
+/// every path colour and from the goal's darker red.
+pub const WARN: RGBColor = RGBColor(255, 0, 40);
+/// The reference path a comparison's gaps are measured against.
+pub const REFERENCE: RGBColor = RGBColor(0, 90, 50);
 
 /// Colours that stay visible on both the dark and the light end of the blue seabed map and
 /// stay apart from the start (green) and goal (red) markers.
@@ -171,6 +176,22 @@ pub fn tick_formatter(range: Range<f64>, labels: usize) -> impl Fn(&f64) -> Stri
     move |v: &f64| fmt_num(*v, step)
 }
 
+/// Width (pixels) of a y label area holding `labels` right-aligned at the axis and the
+/// rotated axis description beyond them, so the description never overlaps a tick label.
+/// Digits are wider than average text (about 0.64 em in DejaVu Sans), so they are measured as
+/// such.
+pub fn label_area_for(labels: impl IntoIterator<Item = String>) -> u32 {
+    let widest = labels.into_iter().map(|l| l.chars().count() as f64 * TICK_PX * 0.64).fold(0.0, f64::max);
+    // Tick mark and gap, then the description's line and a margin.
+    (widest + 12.0 + AXIS_DESC_PX * 1.4 + 8.0).ceil().max(48.0) as u32
+}
+
+/// [`label_area_for`] the ticks plotters puts on a linear axis over `range` (`labels` of
+/// them) formatted by `fmt`.
+pub fn y_label_area(range: Range<f64>, labels: usize, fmt: &dyn Fn(&f64) -> String) -> u32 {
+    label_area_for(RangedCoordf64::from(range).key_points(labels).iter().map(fmt))
+}
+
 /// Compact number for a cost or speed: 3 significant digits, scientific when very large/small.
 pub fn fmt_sig(v: f64) -> String {
     if !v.is_finite() {
@@ -246,6 +267,33 @@ pub enum Swatch {
     },
     Marker(Marker, RGBColor),
     Arrow(RGBColor),
+    /// An arrow `len_px` long: the scale of the current arrows (wider than other swatches).
+    ScaledArrow {
+        color: RGBColor,
+        len_px: i32,
+    },
+    /// A kind of obstacle.
+    Obstacle(super::obstacle_look::ObstacleLook),
+    /// A hollow ring: a marked waypoint or place.
+    Ring(RGBColor),
+    /// A wide translucent band: a highlighted segment.
+    Band(RGBAColor),
+    /// A dashed path line (the reference path).
+    DashedPath(RGBColor),
+    /// A line over a band of its own colour: a median with its interquartile range.
+    LineOverBand(RGBColor),
+    /// A hollow diamond: a marked point of a curve.
+    Diamond(RGBColor),
+}
+
+impl Swatch {
+    /// Pixels the swatch takes in a legend row.
+    fn width(&self) -> f64 {
+        match self {
+            Swatch::ScaledArrow { len_px, .. } => (*len_px as f64 + 4.0).max(SWATCH_W),
+            _ => SWATCH_W,
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -275,7 +323,7 @@ fn legend_layout(entries: &[LegendEntry], width: f64) -> (Vec<(f64, usize)>, usi
     let mut out = Vec::with_capacity(entries.len());
     let (mut x, mut row) = (0.0, 0usize);
     for e in entries {
-        let w = SWATCH_W + 6.0 + text_width(&e.label, LEGEND_PX);
+        let w = e.swatch.width() + 6.0 + text_width(&e.label, LEGEND_PX);
         if x > 0.0 && x + w > width {
             x = 0.0;
             row += 1;
@@ -301,7 +349,7 @@ pub fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, entries: &
     for (e, (x, row)) in entries.iter().zip(pos) {
         let cy = (row as f64 * ROW_H + ROW_H / 2.0 + 3.0).round() as i32;
         let x0 = x.round() as i32;
-        let x1 = x0 + SWATCH_W as i32;
+        let x1 = x0 + e.swatch.width() as i32;
         let xm = (x0 + x1) / 2;
         match &e.swatch {
             Swatch::Line { color, width } => {
@@ -326,6 +374,27 @@ pub fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, entries: &
             }
             Swatch::Marker(m, c) => draw_marker(area, (xm, cy), *m, *c)?,
             Swatch::Arrow(c) => draw_arrow_px(area, (x0 + 2, cy), (x1 - 2, cy), *c, 1)?,
+            Swatch::ScaledArrow { color, len_px } => {
+                draw_arrow_px(area, (x0 + 2, cy), (x0 + 2 + len_px, cy), color.mix(0.8), 1)?
+            }
+            Swatch::Obstacle(look) => super::obstacle_look::draw_swatch(area, (xm, cy), *look)?,
+            Swatch::Ring(c) => {
+                area.draw(&Circle::new((xm, cy), 7, line(*c, 2))).map_err(plot_err)?;
+            }
+            Swatch::Band(c) => {
+                area.draw(&PathElement::new(vec![(x0, cy), (x1, cy)], line(*c, 10))).map_err(plot_err)?;
+            }
+            Swatch::DashedPath(c) => {
+                for k in 0..3 {
+                    let xa = x0 + k * 10;
+                    area.draw(&PathElement::new(vec![(xa, cy), (xa + 6, cy)], line(*c, 3))).map_err(plot_err)?;
+                }
+            }
+            Swatch::LineOverBand(c) => {
+                area.draw(&Rectangle::new([(x0, cy - 6), (x1, cy + 6)], fill(c.mix(0.2)))).map_err(plot_err)?;
+                area.draw(&PathElement::new(vec![(x0, cy), (x1, cy)], line(*c, 2))).map_err(plot_err)?;
+            }
+            Swatch::Diamond(c) => draw_diamond(area, (xm, cy), *c)?,
         }
         area.draw(&Text::new(e.label.clone(), (x1 + 6, cy), text.clone())).map_err(plot_err)?;
     }
@@ -353,6 +422,18 @@ pub fn draw_marker<DB: DrawingBackend>(
     let mut outline = pts;
     outline.push(outline[0]);
     area.draw(&PathElement::new(outline, line(BLACK, 1))).map_err(plot_err)?;
+    Ok(())
+}
+
+/// A hollow diamond 7 pixels from centre to corner, on white so it stands out on a line.
+pub fn draw_diamond<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    (x, y): (i32, i32),
+    color: RGBColor,
+) -> Result<()> {
+    let pts = vec![(x, y - 7), (x + 7, y), (x, y + 7), (x - 7, y), (x, y - 7)];
+    area.draw(&Polygon::new(pts.clone(), fill(WHITE))).map_err(plot_err)?;
+    area.draw(&PathElement::new(pts, line(color, 2))).map_err(plot_err)?;
     Ok(())
 }
 

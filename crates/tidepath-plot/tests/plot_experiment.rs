@@ -11,7 +11,7 @@ use tidepath_plot::experiment::{
     best_path_label, render_boxplot_figure, render_convergence_figure, render_paths_figure, write_boxplot_figure,
     write_convergence_figure, write_paths_figure, PlannerRuns, ProblemRuns,
 };
-use tidepath_plot::PlotPath;
+use tidepath_plot::{PlanFigure, PlotPath};
 
 const PLANNERS: [&str; 3] = ["pso", "de", "random search"];
 
@@ -82,7 +82,7 @@ fn runs(planner: &'static str, seed: u64, scale: f64, zeros: bool) -> PlannerRun
         histories.push(h);
     }
     let costs = histories.iter().map(|h| *h.last().unwrap()).collect();
-    PlannerRuns { planner, costs, histories }
+    PlannerRuns { planner, costs, histories, search_before_iterations: false }
 }
 
 fn problem(name: &'static str, seed: u64, scale: f64, zeros: bool) -> ProblemRuns<'static> {
@@ -188,7 +188,12 @@ fn awkward_runs_still_render() {
             problem: "ragged",
             planners: vec![
                 // One run only: a line, no band, a box that is a bar.
-                PlannerRuns { planner: "lonely", costs: vec![3.0], histories: vec![vec![inf, inf, 9.0, 5.0, 3.0]] },
+                PlannerRuns {
+                    planner: "lonely",
+                    costs: vec![3.0],
+                    histories: vec![vec![inf, inf, 9.0, 5.0, 3.0]],
+                    search_before_iterations: false,
+                },
                 // Histories of different lengths, with NaN gaps and infinite starts.
                 PlannerRuns {
                     planner: "ragged runs",
@@ -198,19 +203,32 @@ fn awkward_runs_still_render() {
                         vec![inf, inf, inf, inf, inf, inf, 6.0, 4.0],
                         vec![inf, inf],
                     ],
+                    search_before_iterations: true,
                 },
                 // Every run starts infeasible and no history is finite at all.
-                PlannerRuns { planner: "never feasible", costs: vec![inf, inf], histories: vec![vec![inf; 6]; 2] },
+                PlannerRuns {
+                    planner: "never feasible",
+                    costs: vec![inf, inf],
+                    histories: vec![vec![inf; 6]; 2],
+                    search_before_iterations: false,
+                },
             ],
         },
         ProblemRuns {
             problem: "all equal",
-            planners: vec![PlannerRuns { planner: "flat", costs: vec![7.0; 30], histories: vec![vec![7.0; 10]; 30] }],
+            planners: vec![PlannerRuns {
+                planner: "flat",
+                costs: vec![7.0; 30],
+                histories: vec![vec![7.0; 10]; 30],
+                search_before_iterations: false,
+            }],
         },
         ProblemRuns { problem: "nothing ran", planners: vec![] },
     ];
     let svg = render_convergence_figure("edge cases", &problems).unwrap();
     assert_well_formed(&svg, "edge cases", &["ragged", "all equal", "lonely", "never feasible", "no runs"]);
+    // A planner whose iterations follow a search gets its iteration 0 marked and explained.
+    assert!(svg.contains("iteration 0 of ragged runs: refinement starts from the reference search"));
     save("convergence_edge.svg", &svg);
     let svg = render_boxplot_figure("edge cases", &problems).unwrap();
     assert_well_formed(&svg, "edge cases", &["ragged runs", "flat", "no finite cost", "1 run = ∞", "no runs"]);
@@ -268,12 +286,25 @@ fn best_paths_with_costs_in_the_legend() {
     let costs = [1.234, 0.98765, 3.2e6];
     let labelled: Vec<PlotPath> =
         PLANNERS.iter().zip(&paths).zip(costs).map(|((p, pts), c)| PlotPath::new(best_path_label(p, c), pts)).collect();
-    let svg = render_paths_figure("Best path per planner", &world, start, goal, 0.0, &labelled).unwrap();
+    let reference = via(1_500.0, 1_000.0, -300.0);
+    let mut fig = PlanFigure::new("Best path per planner", &world, start, goal, 0.0);
+    fig.paths = labelled;
+    fig.reference = Some(PlotPath::new("reference: theta-star (cost 0.9)", &reference));
+    let svg = render_paths_figure(&fig).unwrap();
     assert_well_formed(
         &svg,
         "Best path per planner",
-        &["pso (best 1.23)", "de (best 0.988)", "random search (best 3.2e6)", "Plan view", "Vertical profile"],
+        &[
+            "pso (best 1.23)",
+            "de (best 0.988)",
+            "random search (best 3.2e6)",
+            "Plan view",
+            "Vertical profile",
+            "reference: theta-star (cost 0.9)",
+        ],
     );
+    // The reference is drawn: dashed pieces in its colour.
+    assert!(svg.matches(r##"stroke="#005A32" stroke-width="2""##).count() >= 3, "no reference path");
     save("paths.svg", &svg);
 }
 
@@ -290,7 +321,9 @@ fn writers_replace_files_whole() {
     let world = small_world();
     let pts = [Vec3::new(100.0, 100.0, -50.0), Vec3::new(3_900.0, 2_900.0, -50.0)];
     let out = dir.path().join("paths.svg");
-    write_paths_figure("t", &world, pts[0], pts[1], 0.0, &[PlotPath::new("x", &pts)], &out).unwrap();
+    let mut fig = PlanFigure::new("t", &world, pts[0], pts[1], 0.0);
+    fig.paths = vec![PlotPath::new("x", &pts)];
+    write_paths_figure(&fig, &out).unwrap();
     assert!(std::fs::read_to_string(&out).unwrap().starts_with("<svg"));
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3, "no temporary file left behind");
 }

@@ -129,7 +129,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         outputs.fill(id, export(&report, format, geo)?);
     }
     if let Some(id) = plot_id {
-        outputs.fill(id, figure(&scenario, &report)?);
+        outputs.fill(id, figure(&scenario, &report, reference.as_ref())?);
     }
     outputs.commit()?;
     print_summary(&scenario, &report);
@@ -158,30 +158,53 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     Ok(Outcome::Status(report.status))
 }
 
-fn figure(scenario: &Scenario, report: &PlanReport) -> Result<String, Error> {
+fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanReport>) -> Result<String, Error> {
     let history: Vec<f64> = report.history.iter().map(|h| h.unwrap_or(f64::NAN)).collect();
     let cost = report.cost.map_or("none".to_string(), |c| format!("{c:.4}"));
     let to_points = |p: &[[f64; 3]]| p.iter().map(|q| tidepath::Vec3::from_array(*q)).collect::<Vec<_>>();
     let several = report.missions.len() > 1;
-    let mut owned: Vec<(String, Vec<tidepath::Vec3>)> = Vec::new();
+    // (label, points, mission): the mission's times and violations describe its final path.
+    let mut owned: Vec<(String, Vec<tidepath::Vec3>, Option<&tidepath_io::MissionReport>)> = Vec::new();
     for m in &report.missions {
         let name = if several { format!("{} {}", report.planner, m.name) } else { report.planner.clone() };
         match &m.smoothed {
-            None => owned.push((name, to_points(&m.waypoints))),
+            None => owned.push((name, to_points(&m.waypoints), Some(m))),
             Some(s) => {
-                owned.push((format!("{name} (smoothed)"), to_points(s)));
-                owned.push((format!("{name} (raw)"), to_points(&m.waypoints)));
+                owned.push((format!("{name} (smoothed)"), to_points(s), Some(m)));
+                owned.push((format!("{name} (raw)"), to_points(&m.waypoints), None));
             }
         }
     }
-    let fig = PlanFigure {
-        title: format!("{} — {}, seed {}: cost {cost}, {}", scenario.name, report.planner, report.seed, report.status),
-        world: &scenario.world,
-        start: scenario.start,
-        goal: scenario.goal,
-        time: scenario.departure_time,
-        paths: owned.iter().map(|(label, pts)| PlotPath { label: label.clone(), points: pts }).collect(),
-        histories: vec![(report.planner.clone(), &history)],
+    let reference_points = reference.filter(|r| r.status.is_success()).map(|r| r.missions[0].points());
+    let mut fig = PlanFigure::new(
+        format!("{} — {}, seed {}: cost {cost}, {}", scenario.name, report.planner, report.seed, report.status),
+        &scenario.world,
+        scenario.start,
+        scenario.goal,
+        scenario.departure_time,
+    );
+    fig.epoch = scenario.epoch;
+    fig.safety_distance = scenario.vehicle.safety_distance;
+    fig.focus = report.missions.iter().filter_map(|m| m.focus.clone()).collect();
+    fig.paths = owned
+        .iter()
+        .map(|(label, pts, m)| match m {
+            Some(m) => PlotPath::new(label.clone(), pts).with_times(&m.times).with_violations(&m.violations),
+            None => PlotPath::new(label.clone(), pts),
+        })
+        .collect();
+    fig.reference = reference
+        .zip(reference_points.as_ref())
+        .map(|(r, pts)| PlotPath::new(format!("reference: {}", r.planner), pts));
+    fig.histories = vec![(report.planner.clone(), &history)];
+    // A search before the iterations (a composite planner's reference) or a warm start is
+    // where iteration 0 comes from.
+    fig.history_start = if report.expansions > 0 && !history.is_empty() {
+        Some(format!("after a reference search ({} expansions)", report.expansions))
+    } else if report.warm_start && !history.is_empty() {
+        Some("includes the warm start (--init)".to_string())
+    } else {
+        None
     };
     render_plan_figure(&fig)
 }

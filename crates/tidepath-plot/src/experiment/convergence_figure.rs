@@ -4,7 +4,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::super::convergence::{build, draw_curves, ConvergenceSeries, Y_LABELS};
+use super::super::convergence::{build, draw_curves, x_range, ConvergenceSeries, Y_LABELS};
 use super::super::log_axis::DecadeAxis;
 use super::super::style::{self, plot_err, LegendEntry, Swatch};
 use super::cost_axis::{draw_zero_tick, CostAxis};
@@ -66,6 +66,8 @@ struct Curve {
     median: Vec<f64>,
     q3: Vec<f64>,
     runs: usize,
+    /// Iteration 0 follows a search (a composite planner's reference): marked.
+    seeded: bool,
 }
 
 /// Everything a convergence panel shows, computed before drawing so the header knows whether
@@ -101,6 +103,7 @@ impl<'p> ConvergencePanel<'p> {
                     median: m(b.median),
                     q3: m(b.q3),
                     runs: b.runs,
+                    seeded: p.search_before_iterations,
                 }
             })
             .collect();
@@ -113,18 +116,34 @@ impl<'p> ConvergencePanel<'p> {
 pub fn render_convergence_figure(title: &str, problems: &[ProblemRuns]) -> Result<String> {
     let order = planner_order(problems);
     let panels_data: Vec<ConvergencePanel> = problems.iter().map(|p| ConvergencePanel::of(p, &order)).collect();
+    // Each planner's swatch is its line over its own band, as the panels draw them.
     let mut legend: Vec<LegendEntry> = order
         .iter()
         .enumerate()
-        .map(|(i, p)| LegendEntry::new(*p, Swatch::Line { color: style::path_color(i).to_rgba(), width: 2 }))
+        .map(|(i, p)| LegendEntry::new(*p, Swatch::LineOverBand(style::path_color(i))))
         .collect();
-    legend.push(LegendEntry::new(
-        "interquartile range (25–75 % of runs)",
-        Swatch::Fill { color: style::MUTED.mix(0.25), edge: None },
-    ));
-    let mut note = "Lines: median over runs of the best cost so far, drawn once half of the runs (bands: three \
-                    quarters) have a finite cost."
+    let seeded: Vec<&str> =
+        problems.iter().flat_map(|p| &p.planners).filter(|p| p.search_before_iterations).map(|p| p.planner).fold(
+            Vec::new(),
+            |mut v, p| {
+                if !v.contains(&p) {
+                    v.push(p);
+                }
+                v
+            },
+        );
+    if !seeded.is_empty() {
+        legend.push(LegendEntry::new(
+            format!("iteration 0 of {}: refinement starts from the reference search", seeded.join(", ")),
+            Swatch::Diamond(style::MUTED),
+        ));
+    }
+    let mut note = "Lines: median over runs of the best cost so far, drawn once half of the runs have a finite \
+                    cost; shaded: the interquartile range (25–75 % of runs), drawn once three quarters have one."
         .to_string();
+    if !seeded.is_empty() {
+        note.push_str(" A reference search's own time and cost are not on the iteration axis.");
+    }
     if panels_data.iter().any(|p| p.axis.and_then(|a| a.zero_at()).is_some()) {
         note.push_str(ZERO_NOTE);
     }
@@ -160,6 +179,7 @@ fn draw_convergence_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, dat
             median: &[],
             band: Some((c.q1.as_slice(), c.q3.as_slice())),
             color: Some(c.color),
+            mark_first: false,
         })
         .collect();
     series.extend(data.curves.iter().map(|c| ConvergenceSeries {
@@ -167,9 +187,10 @@ fn draw_convergence_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, dat
         median: &c.median,
         band: None,
         color: Some(c.color),
+        mark_first: c.seeded,
     }));
     let n = data.curves.iter().map(|c| c.median.len()).max().unwrap_or(0);
-    let x = 0.0..(n.saturating_sub(1) as f64).max(1.0);
+    let x = x_range(n, &series);
     let desc = axis.desc("best cost");
     let zero = match axis {
         CostAxis::Log { lo, hi, decades, .. } => {

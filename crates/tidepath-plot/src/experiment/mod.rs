@@ -26,10 +26,8 @@ mod tests;
 
 use std::path::Path;
 
-use super::{style, PlotPath};
+use super::{style, PlanFigure};
 use tidepath::error::Result;
-use tidepath::geom::Vec3;
-use tidepath::world::World;
 use tidepath_experiments::RunRecord;
 
 pub use boxplot_figure::render_boxplot_figure;
@@ -45,6 +43,9 @@ pub struct PlannerRuns<'a> {
     pub costs: Vec<f64>,
     /// Best cost per iteration per run; NaN or infinite entries mean "no finite cost yet".
     pub histories: Vec<Vec<f64>>,
+    /// A search ran before the iterations (a composite planner's reference): iteration 0 is
+    /// where the refinement started from it, and is marked so.
+    pub search_before_iterations: bool,
 }
 
 /// All planners' runs on one problem (one panel of the convergence and box plot figures).
@@ -75,9 +76,16 @@ pub fn group_runs(records: &[RunRecord]) -> Vec<ProblemRuns<'_>> {
             }
         };
         planners[k].costs.push(r.cost);
+        planners[k].search_before_iterations |= seeded_by_search(r);
         planners[k].histories.push(r.history.iter().map(|v| v.unwrap_or(f64::INFINITY)).collect());
     }
     out
+}
+
+/// Whether a run searched before it iterated (expansions and iterations both counted): the
+/// history then starts from the search's result, not from a random population.
+pub fn seeded_by_search(r: &RunRecord) -> bool {
+    r.expansions > 0 && r.iterations > 0 && !r.history.is_empty()
 }
 
 /// Label of a planner's best path in the paths figure, so the legend reads the same in every
@@ -116,14 +124,6 @@ pub fn write_boxplot_figure(title: &str, problems: &[ProblemRuns], out: &Path) -
 }
 
 /// Writes [`render_paths_figure`] to `out` atomically.
-pub fn write_paths_figure(
-    title: &str,
-    world: &World,
-    start: Vec3,
-    goal: Vec3,
-    time: f64,
-    paths: &[PlotPath],
-    out: &Path,
-) -> Result<()> {
-    tidepath_io::write_atomic(out, render_paths_figure(title, world, start, goal, time, paths)?.as_bytes())
+pub fn write_paths_figure(fig: &PlanFigure, out: &Path) -> Result<()> {
+    tidepath_io::write_atomic(out, render_paths_figure(fig)?.as_bytes())
 }

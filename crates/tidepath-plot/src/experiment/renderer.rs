@@ -2,9 +2,10 @@
 //! [`tidepath_experiments::output::FigureRenderer`].
 
 use super::{render_boxplot_figure, render_convergence_figure, render_paths_figure, PlannerRuns, ProblemRuns};
-use crate::PlotPath;
+use crate::{PlanFigure, PlotPath};
 use tidepath::error::Result;
 use tidepath::geom::Vec3;
+use tidepath::planner::MissionPlan;
 use tidepath_experiments::compare::Comparison;
 use tidepath_experiments::output::FigureRenderer;
 use tidepath_io::scenario::Scenario;
@@ -33,6 +34,7 @@ impl FigureRenderer for ExperimentFigures {
                     .iter()
                     .map(|pl| PlannerRuns {
                         planner: pl,
+                        search_before_iterations: c.records_of(p, pl).any(super::seeded_by_search),
                         costs: c.records_of(p, pl).map(|r| r.cost).collect(),
                         histories: c
                             .records_of(p, pl)
@@ -55,31 +57,51 @@ impl FigureRenderer for ExperimentFigures {
             ("boxplot.svg".to_string(), render_boxplot_figure(&format!("Final cost — {title}"), &problems)?),
         ];
         if let Some(s) = scenario {
-            let best: Vec<(String, Vec<Vec3>)> = c
+            // Each planner's best run, judged again on the scenario so the figure can mark its
+            // violations and time its path (run records keep only the points).
+            let best: Vec<(String, Vec<Vec3>, Option<MissionPlan>)> = c
                 .planners
                 .iter()
                 .filter_map(|pl| {
                     c.records_of(&s.name, pl).min_by(|a, b| a.cost.total_cmp(&b.cost)).map(|r| {
                         let ok = if r.feasible { "feasible" } else { "infeasible" };
-                        (
-                            format!("{pl} (best cost {}, {ok})", tidepath_experiments::table::num(r.cost)),
-                            r.waypoints.iter().map(|p| Vec3::from_array(*p)).collect(),
-                        )
+                        let points: Vec<Vec3> = r.waypoints.iter().map(|p| Vec3::from_array(*p)).collect();
+                        let judged = (points.len() >= 2).then(|| s.evaluate(&points).ok()).flatten();
+                        (format!("{pl} (best cost {}, {ok})", tidepath_experiments::table::num(r.cost)), points, judged)
                     })
                 })
                 .collect();
-            let paths: Vec<PlotPath> = best.iter().map(|(l, pts)| PlotPath::new(l.clone(), pts)).collect();
-            out.push((
-                "paths.svg".to_string(),
-                render_paths_figure(
-                    &format!("{} — best path of each planner over {} runs", s.name, c.runs),
-                    &s.world,
-                    s.start,
-                    s.goal,
-                    s.departure_time,
-                    &paths,
-                )?,
-            ));
+            let reference_points: Vec<Vec3> = c
+                .reference
+                .as_ref()
+                .map(|r| r.waypoints.iter().map(|p| Vec3::from_array(*p)).collect())
+                .unwrap_or_default();
+            let mut fig = PlanFigure::new(
+                format!("{} — best path of each planner over {} runs", s.name, c.runs),
+                &s.world,
+                s.start,
+                s.goal,
+                s.departure_time,
+            );
+            fig.epoch = s.epoch;
+            fig.safety_distance = s.vehicle.safety_distance;
+            fig.paths = best
+                .iter()
+                .map(|(l, pts, judged)| match judged {
+                    Some(m) => PlotPath::new(l.clone(), pts).with_times(&m.times).with_violations(&m.violations),
+                    None => PlotPath::new(l.clone(), pts),
+                })
+                .collect();
+            fig.reference = c.reference.as_ref().filter(|_| reference_points.len() >= 2).map(|r| {
+                let label = format!(
+                    "reference: {} (cost {}, {})",
+                    r.planner,
+                    tidepath_experiments::table::num(r.cost),
+                    r.status
+                );
+                PlotPath::new(label, &reference_points)
+            });
+            out.push(("paths.svg".to_string(), render_paths_figure(&fig)?));
         }
         Ok(out)
     }

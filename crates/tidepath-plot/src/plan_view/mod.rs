@@ -5,6 +5,7 @@
 //! than left to plotters.
 
 mod graticule;
+mod obstacles;
 mod overlays;
 mod seabed;
 #[cfg(test)]
@@ -15,14 +16,18 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor;
 
+use super::obstacle_look::ObstacleLook;
 use super::style::{self, plot_err, LegendEntry, LengthUnit, Marker, Swatch};
-use super::PlotPath;
+use super::{failure, time_label, PlanFigure, PlotPath};
 use graticule::Graticule;
-use overlays::{draw_endpoints, draw_obstacle_motion, draw_obstacles, draw_paths, draw_quiver, Quiver};
+use obstacles::{draw_mark_labels, draw_obstacle_motion, draw_obstacles, draw_safety_halos, draw_tracks, mark_times};
+use overlays::{
+    draw_endpoints, draw_focus, draw_paths, draw_quiver, draw_reference, draw_violated_segments,
+    draw_violated_waypoints, quiver_px_per_speed, scale_speed, Quiver,
+};
 use seabed::{draw_colorbar_horizontal, draw_colorbar_vertical, draw_seabed, Seabed};
 use tidepath::error::{Error, Result};
-use tidepath::geom::Vec3;
-use tidepath::world::World;
+use tidepath::world::{Current, World};
 
 type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
@@ -40,10 +45,10 @@ enum BarPlace {
     Below,
 }
 
-/// The region shown: the domain, grown to hold every path point, start and goal so nothing is
-/// squashed against the frame.
-fn view_rect(world: &World, paths: &[PlotPath], start: Vec3, goal: Vec3) -> Result<(f64, f64, f64, f64)> {
-    let b = world.bounds;
+/// The region shown: the domain, grown to hold every path point, start, goal and focus so
+/// nothing is squashed against the frame.
+fn view_rect(fig: &PlanFigure) -> Result<(f64, f64, f64, f64)> {
+    let b = fig.world.bounds;
     let (mut x0, mut y0, mut x1, mut y1) = (b.min.x, b.min.y, b.max.x, b.max.y);
     if !(x0.is_finite() && y0.is_finite() && x1.is_finite() && y1.is_finite() && x1 > x0 && y1 > y0) {
         return Err(Error::input(
@@ -51,7 +56,8 @@ fn view_rect(world: &World, paths: &[PlotPath], start: Vec3, goal: Vec3) -> Resu
             format!("cannot plot a domain without horizontal extent: {:?} .. {:?}", b.min, b.max),
         ));
     }
-    let extra = paths.iter().flat_map(|p| p.points.iter()).chain([&start, &goal]);
+    let paths = fig.paths.iter().chain(&fig.reference).flat_map(|p| p.points.iter());
+    let extra = paths.chain([&fig.start, &fig.goal]).chain(fig.focus.iter().map(|f| &f.at));
     for p in extra.filter(|p| p.x.is_finite() && p.y.is_finite()) {
         x0 = x0.min(p.x);
         x1 = x1.max(p.x);
@@ -73,24 +79,41 @@ fn current_depth(world: &World, paths: &[PlotPath]) -> f64 {
     }
 }
 
-/// Draws the plan view (x east, y north) with its legend and, when there is a seabed, a colour
-/// bar. Paths take colours [`style::path_color`] in order.
-pub fn draw_plan_view<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    world: &World,
-    time: f64,
-    paths: &[PlotPath],
-    start: Vec3,
-    goal: Vec3,
-) -> Result<()> {
-    let view = view_rect(world, paths, start, goal)?;
+/// Whether the picture depends on the time it is drawn at: a current that changes with time
+/// or an obstacle that moves. Its caption then says which time it shows.
+fn time_varying(world: &World) -> bool {
+    let current = match &world.current {
+        Current::Jet(_) => true,
+        Current::Grid(g) => !g.is_steady(),
+        Current::None | Current::Uniform(_) | Current::Vortices(_) => false,
+    };
+    current || world.obstacles.iter().any(obstacles::is_moving)
+}
+
+/// The instant the map shows, for captions and legends: "t = 0 s (departure)".
+fn shown_at(fig: &PlanFigure) -> String {
+    format!("{} (departure)", time_label::instant(fig.time, fig.epoch))
+}
+
+/// Draws the plan view (x east, y north) of `fig` with its legend and, when there is a
+/// seabed, a colour bar. Paths take colours [`style::path_color`] in order.
+pub fn draw_plan_view<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &PlanFigure) -> Result<()> {
+    let (world, time, paths) = (fig.world, fig.time, fig.paths.as_slice());
+    let view = view_rect(fig)?;
     let (x0, y0, x1, y1) = view;
     let unit = LengthUnit::for_extent((x1 - x0).max(y1 - y0));
     let seabed = Seabed::sample(&world.terrain, x0, y0, x1, y1);
     let quiver = Quiver::sample(world, time, current_depth(world, paths), view);
+    let marks = mark_times(fig);
 
-    let legend = legend_entries(world, time, paths, seabed.as_ref(), quiver.as_ref());
+    // The scale arrow's length is known once the map is laid out; its legend entry keeps a
+    // place as wide as the longest arrow can be and gets its length below.
     let (w, h) = area.dim_in_pixel();
+    // The safety halo is drawn when it is at least two pixels wide (thinner, it would only
+    // thicken the outline); the map is at most the area's width, which decides it before the
+    // layout, since the legend says whether it is there.
+    let halos = !world.obstacles.is_empty() && fig.safety_distance / (x1 - x0) * f64::from(w) >= 2.0;
+    let mut legend = legend_entries(fig, seabed.as_ref(), quiver.as_ref(), !marks.is_empty(), halos);
     let legend_w = w.saturating_sub(20).max(100);
     let legend_h = style::legend_height(&legend, legend_w);
 
@@ -119,8 +142,7 @@ pub fn draw_plan_view<DB: DrawingBackend>(
     let left = (w.saturating_sub(block_w) / 2) as i32;
     let legend_top = chart_h + 6 + if bar == Some(BarPlace::Below) { COLORBAR_H } else { 0 };
 
-    let caption =
-        if time == 0.0 { "Plan view".to_string() } else { format!("Plan view at t = {} s", style::fmt_sig(time)) };
+    let caption = if time_varying(world) { format!("Plan view at {}", shown_at(fig)) } else { "Plan view".to_string() };
     let body = style::caption(area, &caption)?;
     let chart_area = body.clone().shrink((left, 0), (chart_w, chart_h));
     let (nx_labels, ny_labels) = ((plot_w / 70).clamp(2, 10) as usize, (plot_h / 45).clamp(2, 10) as usize);
@@ -179,11 +201,30 @@ pub fn draw_plan_view<DB: DrawingBackend>(
     }
     if let Some(q) = &quiver {
         draw_quiver(&chart, q, u)?;
+        let len_px = (scale_speed(q.max_speed) * quiver_px_per_speed(&chart, q, u)).round() as i32;
+        for e in legend.iter_mut() {
+            if let Swatch::ScaledArrow { len_px: l, .. } = &mut e.swatch {
+                *l = len_px.clamp(4, MAX_SCALE_ARROW_PX);
+            }
+        }
     }
-    draw_obstacles(&chart, world, time, u)?;
+    let warn: Vec<usize> = fig.focus.iter().flat_map(|f| failure::obstacles_at(fig, f)).collect();
+    draw_obstacles(&chart, fig, u, &warn)?;
+    if halos {
+        draw_safety_halos(&chart, fig, u)?;
+    }
+    draw_tracks(&chart, fig, u, &marks)?;
+    draw_violated_segments(&chart, paths, u)?;
     draw_paths(&chart, paths, u)?;
-    draw_obstacle_motion(&chart, world, time, u)?;
-    draw_endpoints(&chart, paths, start, goal, u)?;
+    // Over the paths, dashed: a path that is the reference (an exact planner's) shows through.
+    if let Some(r) = &fig.reference {
+        draw_reference(&chart, r, u)?;
+    }
+    draw_violated_waypoints(&chart, paths, u)?;
+    draw_obstacle_motion(&chart, fig, u)?;
+    draw_mark_labels(&chart, fig, u, &marks)?;
+    draw_endpoints(&chart, paths, fig.start, fig.goal, u)?;
+    draw_focus(&chart, fig, u)?;
     // Frame on top of the shading, which otherwise covers the axis line's inner half.
     chart
         .draw_series(std::iter::once(Rectangle::new([(x0 / u, y0 / u), (x1 / u, y1 / u)], style::line(BLACK, 1))))
@@ -233,32 +274,81 @@ fn draw_degree_ticks<DB: DrawingBackend>(
     Ok(())
 }
 
+/// Longest scale arrow in the legend (pixels): the longest current arrow is 0.8 of the arrow
+/// spacing, about 45 pixels on the widest map.
+const MAX_SCALE_ARROW_PX: i32 = 48;
+
 fn legend_entries(
-    world: &World,
-    time: f64,
-    paths: &[PlotPath],
+    fig: &PlanFigure,
     seabed: Option<&Seabed>,
     quiver: Option<&Quiver>,
+    marks: bool,
+    halos: bool,
 ) -> Vec<LegendEntry> {
-    let mut out: Vec<LegendEntry> =
-        paths.iter().enumerate().map(|(i, p)| LegendEntry::new(&p.label, Swatch::Path(style::path_color(i)))).collect();
+    let (world, paths) = (fig.world, fig.paths.as_slice());
+    let mut out: Vec<LegendEntry> = paths
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let label = if p.points.is_empty() { format!("{} (no path)", p.label) } else { p.label.clone() };
+            LegendEntry::new(label, Swatch::Path(style::path_color(i)))
+        })
+        .collect();
+    if let Some(r) = &fig.reference {
+        out.push(LegendEntry::new(&r.label, Swatch::DashedPath(style::REFERENCE)));
+    }
     out.push(LegendEntry::new("start", Swatch::Marker(Marker::Triangle, style::START)));
     out.push(LegendEntry::new("goal", Swatch::Marker(Marker::Star, style::GOAL)));
-    if !world.obstacles.is_empty() {
-        let label =
-            if time == 0.0 { "obstacle".to_string() } else { format!("obstacle at t = {} s", style::fmt_sig(time)) };
+    let (seg, way) = failure::kinds(paths);
+    if !seg.is_empty() {
+        out.push(LegendEntry::new(failure::legend_text("violated segment", &seg), Swatch::Band(style::WARN.mix(0.65))));
+    }
+    if !way.is_empty() {
+        out.push(LegendEntry::new(failure::legend_text("violated waypoint", &way), Swatch::Ring(style::WARN)));
+    }
+    for f in &fig.focus {
+        out.push(LegendEntry::new(&f.label, Swatch::Ring(style::WARN)));
+    }
+    let mut looks: Vec<ObstacleLook> = world
+        .obstacles
+        .iter()
+        .map(|o| ObstacleLook::of(&o.shape))
+        .collect::<std::collections::BTreeSet<_>>()
+        .into_iter()
+        .collect();
+    looks.sort();
+    for look in looks {
+        out.push(LegendEntry::new(look.label(), Swatch::Obstacle(look)));
+    }
+    if !world.obstacles.is_empty() && halos {
         out.push(LegendEntry::new(
-            label,
-            Swatch::Fill { color: style::OBSTACLE_FILL, edge: Some(style::OBSTACLE_EDGE) },
+            format!("safety distance ({} m)", style::fmt_sig(fig.safety_distance)),
+            Swatch::Dashed(style::OBSTACLE_EDGE.mix(0.7)),
         ));
-        if world.obstacles.iter().any(|o| o.velocity.truncate().length() > 0.0) {
-            out.push(LegendEntry::new("obstacle velocity", Swatch::Arrow(style::OBSTACLE_EDGE)));
+    }
+    if world.obstacles.iter().any(obstacles::is_moving) {
+        out.push(LegendEntry::new("obstacle velocity", Swatch::Arrow(style::OBSTACLE_EDGE)));
+        if marks {
+            out.push(LegendEntry::new(
+                "obstacle (dashed) and vehicle (◇) at the same time after departure",
+                Swatch::Diamond(style::OBSTACLE_EDGE),
+            ));
         }
     }
     if let Some(q) = quiver {
+        let at = if world.dims == tidepath::world::Dims::Two {
+            "current".to_string()
+        } else {
+            format!("current at z = {} m", style::fmt_num(q.z, 1.0))
+        };
+        let when = if time_varying(world) { format!(", {}", shown_at(fig)) } else { String::new() };
         out.push(LegendEntry::new(
-            format!("current at z = {} m (max {} m/s)", style::fmt_num(q.z, 1.0), style::fmt_sig(q.max_speed)),
-            Swatch::Arrow(style::CURRENT),
+            format!(
+                "{at}{when}: arrow = {} m/s (fastest {} m/s)",
+                style::fmt_sig(scale_speed(q.max_speed)),
+                style::fmt_sig(q.max_speed)
+            ),
+            Swatch::ScaledArrow { color: style::CURRENT, len_px: MAX_SCALE_ARROW_PX },
         ));
     }
     if let Some(s) = seabed {

@@ -1,15 +1,17 @@
-//! What the plan view draws over the seabed: currents, obstacles and their motion, paths, and
-//! the start and goal markers.
+//! What the plan view draws over the seabed: currents, paths (with their violations and the
+//! reference), the start and goal markers, and the place a failure is about.
 
+use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::super::failure;
 use super::super::style::{self, plot_err, Marker};
-use super::super::PlotPath;
+use super::super::{PlanFigure, PlotPath};
 use super::Chart;
 use tidepath::error::Result;
 use tidepath::geom::{Aabb, Vec2, Vec3};
-use tidepath::world::{Current, Obstacle, Shape, World};
+use tidepath::world::{Current, World};
 
 /// Current arrows across the view.
 const ARROW_CELLS: usize = 15;
@@ -21,6 +23,16 @@ pub(super) struct Quiver {
     pub(super) max_speed: f64,
     pub(super) z: f64,
     pub(super) spacing: f64,
+}
+
+/// The round speed the legend's scale arrow stands for: 1, 2 or 5 times a power of ten, at
+/// most the fastest current, so the scale arrow is never longer than the longest arrow.
+pub(super) fn scale_speed(max_speed: f64) -> f64 {
+    if !(max_speed > 0.0 && max_speed.is_finite()) {
+        return 1.0;
+    }
+    let mag = 10f64.powf(max_speed.log10().floor());
+    [5.0, 2.0, 1.0].into_iter().map(|m| m * mag).find(|&v| v <= max_speed * (1.0 + 1e-9)).unwrap_or(mag)
 }
 
 impl Quiver {
@@ -57,95 +69,33 @@ impl Quiver {
     }
 }
 
-/// Points of a circle as a polygon, so it is round in data units whatever the pixel scale.
-fn circle_points(c: Vec2, r: f64, u: f64) -> Vec<(f64, f64)> {
-    (0..=64)
-        .map(|k| {
-            let a = std::f64::consts::TAU * k as f64 / 64.0;
-            ((c.x + r * a.cos()) / u, (c.y + r * a.sin()) / u)
-        })
-        .collect()
-}
-
-/// Outline polygon (data units) and horizontal centre (metres) of an obstacle at `time`.
-fn obstacle_outline(o: &Obstacle, time: f64, u: f64) -> Option<(Vec<(f64, f64)>, Vec2)> {
-    let (outline, centre) = match o.shape_at(time) {
-        Shape::Sphere { center, radius } => (circle_points(center.truncate(), radius, u), center.truncate()),
-        Shape::Cylinder { center, radius, .. } | Shape::Circle { center, radius } => {
-            (circle_points(center, radius, u), center)
-        }
-        Shape::Box { min, max } => {
-            let (a, b) = (min / u, max / u);
-            (vec![(a.x, a.y), (b.x, a.y), (b.x, b.y), (a.x, b.y), (a.x, a.y)], (min.truncate() + max.truncate()) * 0.5)
-        }
-    };
-    outline.iter().all(|p| p.0.is_finite() && p.1.is_finite()).then_some((outline, centre))
-}
-
-pub(super) fn draw_obstacles<DB: DrawingBackend>(chart: &Chart<DB>, world: &World, time: f64, u: f64) -> Result<()> {
-    let plot = chart.plotting_area();
-    for (outline, _) in world.obstacles.iter().filter_map(|o| obstacle_outline(o, time, u)) {
-        plot.draw(&Polygon::new(outline.clone(), style::fill(style::OBSTACLE_FILL))).map_err(plot_err)?;
-        plot.draw(&PathElement::new(outline, style::line(style::OBSTACLE_EDGE, 1))).map_err(plot_err)?;
-    }
-    Ok(())
-}
-
-/// Velocity arrows of moving obstacles with their speed, drawn above paths and currents so the
-/// labels stay legible.
-pub(super) fn draw_obstacle_motion<DB: DrawingBackend>(
-    chart: &Chart<DB>,
-    world: &World,
-    time: f64,
-    u: f64,
-) -> Result<()> {
-    let px = chart.plotting_area().strip_coord_spec();
-    for o in &world.obstacles {
-        let v = o.velocity.truncate();
-        let speed = v.length();
-        let Some((_, centre)) = obstacle_outline(o, time, u) else { continue };
-        if !(speed > 0.0 && speed.is_finite()) {
-            continue;
-        }
-        // A fixed on-screen length: the arrow says where it is heading, the label how fast.
-        let from = to_px(chart, centre.x / u, centre.y / u);
-        let dir = v / speed;
-        let to = (from.0 + (dir.x * 34.0).round() as i32, from.1 - (dir.y * 34.0).round() as i32);
-        style::draw_arrow_px(&px, from, to, style::OBSTACLE_EDGE, 2)?;
-        let text = format!("{} m/s", style::fmt_sig(speed));
-        let (tw, th) = (style::text_width(&text, 11.0).round() as i32 + 10, 15);
-        // Centred just beyond the tip, along the arrow, so it covers neither tip nor shaft.
-        let gap = 4.0;
-        let reach_x = if dir.x.abs() > 1e-9 { (tw as f64 / 2.0 + gap) / dir.x.abs() } else { f64::INFINITY };
-        let reach_y = if dir.y.abs() > 1e-9 { (th as f64 / 2.0 + gap) / dir.y.abs() } else { f64::INFINITY };
-        let reach = reach_x.min(reach_y);
-        let bx = to.0 + (dir.x * reach).round() as i32 - tw / 2;
-        let by = to.1 - (dir.y * reach).round() as i32 - th / 2;
-        px.draw(&Rectangle::new([(bx, by), (bx + tw, by + th)], style::fill(WHITE.mix(0.85)))).map_err(plot_err)?;
-        let centre = Pos::new(HPos::Center, VPos::Center);
-        px.draw(&Text::new(text, (bx + tw / 2, by + th / 2), style::font(11.0).pos(centre))).map_err(plot_err)?;
-    }
-    Ok(())
-}
-
 /// Pixel position of a data point relative to the plotting area's top-left corner.
-fn to_px<DB: DrawingBackend>(chart: &Chart<DB>, x: f64, y: f64) -> (i32, i32) {
+pub(super) fn to_px<DB: DrawingBackend>(chart: &Chart<DB>, x: f64, y: f64) -> (i32, i32) {
     let (bx, by) = chart.plotting_area().get_base_pixel();
     let (px, py) = chart.backend_coord(&(x, y));
     (px - bx, py - by)
 }
 
-pub(super) fn draw_quiver<DB: DrawingBackend>(chart: &Chart<DB>, q: &Quiver, u: f64) -> Result<()> {
-    let max = q.max_speed;
-    if !(max > 0.0 && max.is_finite()) {
-        return Ok(());
-    }
-    let px = chart.plotting_area().strip_coord_spec();
+/// Pixels per m/s of the current arrows: the fastest current gets 0.8 of the arrow spacing.
+pub(super) fn quiver_px_per_speed<DB: DrawingBackend>(chart: &Chart<DB>, q: &Quiver, u: f64) -> f64 {
     let (ox, _) = to_px(chart, 0.0, 0.0);
     let (sx, _) = to_px(chart, q.spacing / u, 0.0);
     let spacing_px = (sx - ox).abs() as f64;
+    if q.max_speed > 0.0 && q.max_speed.is_finite() {
+        0.8 * spacing_px / q.max_speed
+    } else {
+        0.0
+    }
+}
+
+pub(super) fn draw_quiver<DB: DrawingBackend>(chart: &Chart<DB>, q: &Quiver, u: f64) -> Result<()> {
+    let per_speed = quiver_px_per_speed(chart, q, u);
+    if per_speed <= 0.0 {
+        return Ok(());
+    }
+    let px = chart.plotting_area().strip_coord_spec();
     for &(x, y, vx, vy) in &q.arrows {
-        let len = (vx * vx + vy * vy).sqrt() / max * 0.8 * spacing_px;
+        let len = (vx * vx + vy * vy).sqrt() * per_speed;
         if len < 2.0 {
             continue;
         }
@@ -155,6 +105,81 @@ pub(super) fn draw_quiver<DB: DrawingBackend>(chart: &Chart<DB>, q: &Quiver, u: 
         let from = (cx - dx.round() as i32, cy - dy.round() as i32);
         let to = (cx + dx.round() as i32, cy + dy.round() as i32);
         style::draw_arrow_px(&px, from, to, style::CURRENT.mix(0.8), 1)?;
+    }
+    Ok(())
+}
+
+fn finite_points(p: &PlotPath, u: f64) -> Vec<(f64, f64)> {
+    p.points.iter().filter(|q| q.x.is_finite() && q.y.is_finite()).map(|q| (q.x / u, q.y / u)).collect()
+}
+
+/// The reference path: dashed over the paths, with its points left out so it reads as a
+/// guide rather than as one more planner's path, and a path equal to it shows between dashes.
+pub(super) fn draw_reference<DB: DrawingBackend>(chart: &Chart<DB>, r: &PlotPath, u: f64) -> Result<()> {
+    let plot = chart.plotting_area();
+    let pts = finite_points(r, u);
+    if pts.len() >= 2 {
+        plot.draw(&DashedPathElement::new(pts, 9, 7, style::line(style::REFERENCE, 2))).map_err(plot_err)?;
+    }
+    Ok(())
+}
+
+/// Bands under the violated segments, drawn before the paths so the path stays on top.
+pub(super) fn draw_violated_segments<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPath], u: f64) -> Result<()> {
+    let plot = chart.plotting_area();
+    for p in paths {
+        for v in p.violations.iter().filter(|v| failure::on_segment(v.kind)) {
+            let (Some(a), Some(b)) = (p.points.get(v.index), p.points.get(v.index + 1)) else { continue };
+            if a.is_finite() && b.is_finite() {
+                let seg = vec![(a.x / u, a.y / u), (b.x / u, b.y / u)];
+                plot.draw(&PathElement::new(seg, style::line(style::WARN.mix(0.65), 12))).map_err(plot_err)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Rings around the violated waypoints (a sharp turn, a point outside the depth band).
+pub(super) fn draw_violated_waypoints<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPath], u: f64) -> Result<()> {
+    let plot = chart.plotting_area();
+    for p in paths {
+        for v in p.violations.iter().filter(|v| !failure::on_segment(v.kind)) {
+            if let Some(q) = p.points.get(v.index).filter(|q| q.is_finite()) {
+                plot.draw(&Circle::new((q.x / u, q.y / u), 9, style::line(style::WARN, 2))).map_err(plot_err)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The places failures are about: a ring with cross hairs, labelled with the focus's label and
+/// what is there (the seabed's depth, the obstacle it is in).
+pub(super) fn draw_focus<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure, u: f64) -> Result<()> {
+    let px = chart.plotting_area().strip_coord_spec();
+    let (pw, ph) = px.dim_in_pixel();
+    for f in fig.focus.iter().filter(|f| f.at.x.is_finite() && f.at.y.is_finite()) {
+        let c = to_px(chart, f.at.x / u, f.at.y / u);
+        px.draw(&Circle::new(c, 15, style::line(WHITE.mix(0.8), 6))).map_err(plot_err)?;
+        px.draw(&Circle::new(c, 15, style::line(style::WARN, 3))).map_err(plot_err)?;
+        for (dx, dy) in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
+            let line = vec![(c.0 + 9 * dx, c.1 + 9 * dy), (c.0 + 22 * dx, c.1 + 22 * dy)];
+            px.draw(&PathElement::new(line, style::line(style::WARN, 2))).map_err(plot_err)?;
+        }
+        let mut lines = vec![f.label.clone()];
+        lines.extend(failure::what_is_there(fig, f));
+        let tw = lines.iter().map(|l| style::text_width(l, style::LEGEND_PX)).fold(0.0, f64::max).round() as i32 + 12;
+        let th = 18 * lines.len() as i32 + 4;
+        // Right of the mark when it fits, else left; above the centre, clear of the start and
+        // goal labels, which go beside their markers.
+        let bx = if c.0 + 26 + tw <= pw as i32 - 2 { c.0 + 26 } else { (c.0 - 26 - tw).max(2) };
+        let by = (c.1 - 26 - th).clamp(2, (ph as i32 - th - 2).max(2));
+        px.draw(&Rectangle::new([(bx, by), (bx + tw, by + th)], style::fill(WHITE.mix(0.9)))).map_err(plot_err)?;
+        px.draw(&Rectangle::new([(bx, by), (bx + tw, by + th)], style::line(style::WARN, 2))).map_err(plot_err)?;
+        for (k, l) in lines.into_iter().enumerate() {
+            let font = if k == 0 { style::bold(style::LEGEND_PX) } else { style::font(style::LEGEND_PX) };
+            let at = (bx + 6, by + 11 + 18 * k as i32);
+            px.draw(&Text::new(l, at, font.pos(Pos::new(HPos::Left, VPos::Center)))).map_err(plot_err)?;
+        }
     }
     Ok(())
 }
