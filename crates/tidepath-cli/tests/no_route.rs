@@ -45,7 +45,7 @@ fn a_search_that_finds_no_route_names_the_optimistic_connection() {
     // Open water of 0.3 degrees is left only along the north shore: the 80-cell raster of
     // the 3-D grid planners cannot pass, the 640 m cells of the reachability check can.
     let s = walled(dir.path(), 48.37, 48.15);
-    let o = tidepath(&["plan", &s, "--planner", "theta-star"], dir.path());
+    let o = tidepath(&["plan", &s, "--planner", "theta-star", "--plot", "f.svg"], dir.path());
     assert_eq!(o.status.code(), Some(1), "{}", String::from_utf8_lossy(&o.stderr));
     let line = first_line(&o);
     assert!(
@@ -58,6 +58,9 @@ fn a_search_that_finds_no_route_names_the_optimistic_connection() {
         "{line}"
     );
     assert!(line.contains(" N, 124.00") && line.contains("try a finer raster"), "{line}");
+    // The figure marks the place.
+    let svg = std::fs::read_to_string(dir.path().join("f.svg")).unwrap();
+    assert!(svg.contains("narrowest passage"), "the figure does not mark the passage");
     // A composite planner whose reference failed says so before its fallback's violation.
     let o = tidepath(&["plan", &s, "--planner", "hybrid", "--iterations", "5"], dir.path());
     let line = first_line(&o);
