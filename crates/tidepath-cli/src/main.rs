@@ -73,18 +73,26 @@ pub fn interrupted() -> bool {
     stop_flag().load(std::sync::atomic::Ordering::Relaxed)
 }
 
+/// A second SIGINT within this time of the first is the same Ctrl-C: `timeout -s INT` (and a
+/// shell killing a process group) delivers one interrupt twice, to the process and to its
+/// group, microseconds apart; a person's second press comes later.
+const SAME_INTERRUPT: std::time::Duration = std::time::Duration::from_millis(250);
+
 /// The stop flag Ctrl-C raises: a running plan or experiment stops at its next check and
-/// keeps what finished (stop reason `cancelled`, exit 130); a second Ctrl-C ends the process
-/// at once, after any output commit in progress (so no file is left half-written).
+/// keeps what finished (stop reason `cancelled`, exit 130); a second Ctrl-C (at least
+/// [`SAME_INTERRUPT`] later) ends the process at once, after any output commit in progress
+/// (so no file is left half-written).
 pub fn stop_flag() -> std::sync::Arc<std::sync::atomic::AtomicBool> {
     use std::sync::atomic::{AtomicBool, Ordering};
     use std::sync::{Arc, OnceLock};
     static FLAG: OnceLock<Arc<AtomicBool>> = OnceLock::new();
+    static FIRST: OnceLock<std::time::Instant> = OnceLock::new();
     FLAG.get_or_init(|| {
         let flag = Arc::new(AtomicBool::new(false));
         let f = flag.clone();
         let _ = ctrlc::set_handler(move || {
-            if f.swap(true, Ordering::SeqCst) {
+            let first = *FIRST.get_or_init(std::time::Instant::now);
+            if f.swap(true, Ordering::SeqCst) && first.elapsed() >= SAME_INTERRUPT {
                 let _no_commit_in_progress = tidepath_io::output::commit_lock();
                 std::process::exit(130);
             }

@@ -9,6 +9,17 @@ use std::time::{Duration, Instant};
 /// Starts `tidepath args` in `dir`, sends SIGINT after `after`, and returns (exit code, time
 /// from the signal to the exit, stdout).
 fn interrupt(dir: &std::path::Path, args: &[&str], after: Duration) -> (Option<i32>, Duration, String) {
+    interrupt_n(dir, args, after, 1)
+}
+
+/// As [`interrupt`], with `signals` SIGINTs sent back to back (as `timeout -s INT` sends one
+/// to the process and one to its group).
+fn interrupt_n(
+    dir: &std::path::Path,
+    args: &[&str],
+    after: Duration,
+    signals: usize,
+) -> (Option<i32>, Duration, String) {
     let child = Command::new(env!("CARGO_BIN_EXE_tidepath"))
         .args(args)
         .current_dir(dir)
@@ -19,8 +30,10 @@ fn interrupt(dir: &std::path::Path, args: &[&str], after: Duration) -> (Option<i
         .unwrap();
     std::thread::sleep(after);
     // SAFETY: sending a signal to our own child.
-    unsafe {
-        libc::kill(child.id() as libc::pid_t, libc::SIGINT);
+    for _ in 0..signals {
+        unsafe {
+            libc::kill(child.id() as libc::pid_t, libc::SIGINT);
+        }
     }
     let sent = Instant::now();
     let out = child.wait_with_output().unwrap();
@@ -88,4 +101,23 @@ fn an_interrupted_reproduction_marks_its_report_incomplete() {
     assert!(took < Duration::from_secs(1), "{took:?}");
     let report = std::fs::read_to_string(dir.path().join("r/REPORT.md")).unwrap();
     assert!(report.contains("**Incomplete**"), "{report}");
+}
+
+/// A cancelled plan exits 130 even when its best path so far is feasible, and writes it; one
+/// interrupt delivered twice at once (process and group) is one Ctrl-C, not two.
+#[test]
+fn a_cancelled_plan_with_a_feasible_best_exits_130_and_writes_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let (code, took, stdout) = interrupt_n(
+        dir.path(),
+        &["plan", "headland", "--planner", "hybrid", "--iterations", "100000000", "--out", "p.json"],
+        Duration::from_millis(1500),
+        2,
+    );
+    assert_eq!(code, Some(130), "{stdout}");
+    assert!(took < Duration::from_secs(1), "{took:?}");
+    let plan: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("p.json")).unwrap()).unwrap();
+    assert_eq!(plan["stop_reason"], "cancelled");
+    assert_eq!(plan["missions"][0]["feasible"], true, "{stdout}");
 }
