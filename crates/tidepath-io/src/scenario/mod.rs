@@ -10,6 +10,7 @@ mod cells;
 pub mod geographic;
 mod jet;
 mod plan;
+mod resample;
 pub mod spec;
 
 pub use build::Scenario;
