@@ -233,7 +233,19 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
 }
 
 /// The longitude/latitude box holding the metric rectangle `lo`..`hi`, with a margin of 1%.
+/// A rectangle around a pole has no such box (its longitudes go all the way round and its
+/// edges never reach the pole's latitude): refused in one line.
 fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
+    for (pole, lat) in [("North", 90.0), ("South", -90.0)] {
+        if let Ok((x, y)) = frame.forward(frame.lon0, lat, "world.bounds") {
+            if (lo[0]..=hi[0]).contains(&x) && (lo[1]..=hi[1]).contains(&y) {
+                return Err(Error::input(
+                    "world.bounds",
+                    format!("the metric domain (the rectangle holding the projected box) contains the {pole} Pole, which data files cannot be read around by longitude/latitude: keep the box clear of the pole"),
+                ));
+            }
+        }
+    }
     let (mut west, mut east, mut south, mut north) =
         (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
     const SAMPLES: usize = 64;
