@@ -29,14 +29,15 @@ const MAX_VALUE_BYTES: usize = 64;
 /// Reads `path`, keeping the nodes inside `subset` (all when `None`) and every `decimate`-th
 /// row and column. Only a regular file is read (a FIFO or `/dev/zero` is refused).
 pub fn read(file: &DataFile, subset: Option<&GeoBox>, decimate: usize) -> Result<GeoGrid> {
-    super::check_not_empty(file)?;
     match file {
         DataFile::Path(path) => {
             let size = crate::input::regular_file(path, &file.display())?;
+            super::check_not_empty(file)?;
             let f = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
             read_from(std::io::BufReader::new(f), &file.display(), Some(size), subset, decimate)
         }
         DataFile::Embedded { bytes, .. } => {
+            super::check_not_empty(file)?;
             read_from(*bytes, &file.display(), Some(bytes.len() as u64), subset, decimate)
         }
     }

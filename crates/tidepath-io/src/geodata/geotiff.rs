@@ -30,15 +30,18 @@ const WGS84: u16 = 4326;
 
 /// Reads `file` inside `subset`, every `decimate`-th pixel.
 pub fn read(file: &DataFile, subset: Option<&GeoBox>, decimate: usize) -> Result<GeoGrid> {
-    super::check_not_empty(file)?;
     let what = file.display();
     match file {
         DataFile::Path(p) => {
             crate::input::regular_file(p, &what)?;
+            super::check_not_empty(file)?;
             let f = std::fs::File::open(p).map_err(|e| Error::io(p, e))?;
             read_from(std::io::BufReader::new(f), &what, subset, decimate)
         }
-        DataFile::Embedded { bytes, .. } => read_from(Cursor::new(*bytes), &what, subset, decimate),
+        DataFile::Embedded { bytes, .. } => {
+            super::check_not_empty(file)?;
+            read_from(Cursor::new(*bytes), &what, subset, decimate)
+        }
     }
 }
 
