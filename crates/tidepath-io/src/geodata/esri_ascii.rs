@@ -32,10 +32,12 @@ pub fn read(file: &DataFile, subset: Option<&GeoBox>, decimate: usize) -> Result
     match file {
         DataFile::Path(path) => {
             let size = crate::input::regular_file(path, &file.display())?;
+            super::check_not_empty(file)?;
             let f = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
             read_from(std::io::BufReader::new(f), &file.display(), Some(size), subset, decimate)
         }
         DataFile::Embedded { bytes, .. } => {
+            super::check_not_empty(file)?;
             read_from(*bytes, &file.display(), Some(bytes.len() as u64), subset, decimate)
         }
     }
@@ -131,20 +133,32 @@ pub fn read_from(
     // Node centres: column i at x0 + i cell, row r (from the north) at the top centre - r cell.
     let lon_of = |i: usize| h.x_centre + i as f64 * h.cell;
     let lat_of = |r: usize| h.y_centre + (ny - 1 - r) as f64 * h.cell;
-    let keep_col: Vec<usize> = (0..nx).filter(|&i| inside_lon(subset, lon_of(i))).step_by(decimate).collect();
-    // Rows inside the box are one run (latitude falls with the row); keep every decimate-th
-    // counted from the south, so the kept lattice is regular.
-    let inside = |r: usize| subset.is_none_or(|b| (b.south..=b.north).contains(&lat_of(r)));
-    let (first_row, last_row) = match ((0..ny).find(|&r| inside(r)), (0..ny).rev().find(|&r| inside(r))) {
-        (Some(a), Some(b)) => (a, b),
-        _ => (0, 0),
+    // The columns and rows inside the box and one beyond each edge (or the two bracketing a
+    // box smaller than a cell), as the NetCDF and GeoTIFF readers keep them, so interpolation
+    // up to the box's edges sees real nodes; every `decimate`-th from the south-west one.
+    let distinct = super::distinct_lons(nx, lon_of);
+    let keep_col: Vec<usize> = super::lon_runs(distinct, lon_of, subset)
+        .into_iter()
+        .flat_map(|(a, b)| (a..=super::decimated_last(a, b, decimate, distinct)).step_by(decimate))
+        .collect();
+    // Rows count from the north; in latitude order (from the south) they run backwards.
+    let south_first = |k: usize| lat_of(ny - 1 - k);
+    let span = match subset {
+        None => Some((0, ny - 1)),
+        Some(b) => super::axis_span(ny, south_first, b.south, b.north),
     };
-    let any_row = inside(first_row);
+    let (first_row, last_row, any_row) = match span {
+        Some((s0, s1)) => {
+            let s1 = super::decimated_last(s0, s1, decimate, ny);
+            (ny - 1 - s1, ny - 1 - s0, true)
+        }
+        None => (0, 0, false),
+    };
     let keep = |r: usize| any_row && (first_row..=last_row).contains(&r) && (last_row - r) % decimate == 0;
     let kept_rows = if any_row { (last_row - first_row) / decimate + 1 } else { 0 };
     if keep_col.len() < 2 || kept_rows < 2 {
         return Err(err(format!(
-            "{} inside the requested box, got {} x {} (of {nx} x {ny})",
+            "{} inside or around the requested box, got {} x {} (of {nx} x {ny})",
             super::TOO_FEW_NODES,
             keep_col.len(),
             kept_rows
@@ -313,11 +327,18 @@ mod tests {
     }
 
     #[test]
-    fn subset_and_decimation_keep_only_the_box() {
+    fn subset_and_decimation_keep_the_box_and_its_bracketing_nodes() {
+        // Columns -123.25 .. -122.25 and rows 48.75, 49.25 inside, one more west and south.
         let b = GeoBox::new(-123.5, 48.5, -122.0, 49.5, "box").unwrap();
         let g = read_from(SAMPLE.as_bytes(), "t.asc", None, Some(&b), 1).unwrap();
-        assert_eq!(g.lon, vec![-123.25, -122.75, -122.25]);
-        assert_eq!(g.lat, vec![48.75, 49.25]);
+        assert_eq!(g.lon, vec![-123.75, -123.25, -122.75, -122.25]);
+        assert_eq!(g.lat, vec![48.25, 48.75, 49.25]);
+        // A box inside one cell reads the four nodes around it.
+        let small = GeoBox::new(-123.2, 48.8, -123.1, 48.9, "box").unwrap();
+        let g = read_from(SAMPLE.as_bytes(), "t.asc", None, Some(&small), 1).unwrap();
+        assert_eq!((g.lon.clone(), g.lat.clone()), (vec![-123.25, -122.75], vec![48.75, 49.25]));
+        assert!(g.value(0, 0).is_nan());
+        assert_eq!((g.value(1, 0), g.value(0, 1), g.value(1, 1)), (7.0, 2.0, 3.0));
         let g = read_from(SAMPLE.as_bytes(), "t.asc", None, None, 2).unwrap();
         assert_eq!(g.lon, vec![-123.75, -122.75]);
         assert_eq!(g.lat, vec![48.25, 49.25]);
@@ -364,10 +385,11 @@ mod tests {
     #[test]
     fn across_the_antimeridian() {
         let text = "ncols 4\nnrows 2\nxllcorner 178\nyllcorner 0\ncellsize 1\n1 2 3 4\n5 6 7 8\n";
-        // Columns at 178.5 .. 181.5; a box from 179 to -179 keeps 179.5 and 180.5.
+        // Columns at 178.5 .. 181.5; a box from 179 to -179 holds 179.5 and 180.5.
         let b = GeoBox::new(179.0, -1.0, -179.0, 3.0, "box").unwrap();
         let g = read_from(text.as_bytes(), "t.asc", None, Some(&b), 1).unwrap();
-        assert_eq!(g.lon, vec![179.5, 180.5]);
-        assert_eq!(g.values, vec![6.0, 7.0, 2.0, 3.0]);
+        // And one column beyond each edge.
+        assert_eq!(g.lon, vec![178.5, 179.5, 180.5, 181.5]);
+        assert_eq!(g.values, vec![5.0, 6.0, 7.0, 8.0, 1.0, 2.0, 3.0, 4.0]);
     }
 }

@@ -7,14 +7,15 @@
 //! * Pixel-is-area (the default): the tie point is a pixel's outer corner, values belong to
 //!   pixel centres. Pixel-is-point: the tie point is the first pixel's centre.
 //! * Only the strips or tiles overlapping the requested box are decoded, so memory follows
-//!   the box.
+//!   the box; a box across the raster's edge meridian (the antimeridian of a global raster)
+//!   reads the columns at both ends.
 
 use std::io::{Cursor, Read, Seek};
 
 use tiff::decoder::{Decoder, DecodingResult};
 use tiff::tags::Tag;
 
-use super::esri_ascii::{inside_lon, reorder_by_lon, unwrap_lon};
+use super::esri_ascii::{reorder_by_lon, unwrap_lon};
 use super::{DataFile, GeoBox, GeoGrid};
 use tidepath::error::{Error, Result};
 
@@ -33,10 +34,14 @@ pub fn read(file: &DataFile, subset: Option<&GeoBox>, decimate: usize) -> Result
     match file {
         DataFile::Path(p) => {
             crate::input::regular_file(p, &what)?;
+            super::check_not_empty(file)?;
             let f = std::fs::File::open(p).map_err(|e| Error::io(p, e))?;
             read_from(std::io::BufReader::new(f), &what, subset, decimate)
         }
-        DataFile::Embedded { bytes, .. } => read_from(Cursor::new(*bytes), &what, subset, decimate),
+        DataFile::Embedded { bytes, .. } => {
+            super::check_not_empty(file)?;
+            read_from(Cursor::new(*bytes), &what, subset, decimate)
+        }
     }
 }
 
@@ -116,24 +121,24 @@ pub fn read_from<R: Read + Seek>(r: R, what: &str, subset: Option<&GeoBox>, deci
     let (i0, j0, x0, y0) = (tie[0], tie[1], tie[3], tie[4]);
     let lon_of = |i: usize| x0 + (i as f64 + half - i0) * scale[0];
     let lat_of = |j: usize| y0 - (j as f64 + half - j0) * scale[1];
-    // The pixels inside the box, one beyond each edge.
-    let cols: Vec<usize> = (0..w).filter(|&i| inside_lon(subset, lon_of(i))).collect();
-    let rows: Vec<usize> =
-        (0..h).filter(|&j| subset.is_none_or(|b| (b.south..=b.north).contains(&lat_of(j)))).collect();
-    let (Some(&c0), Some(&c1), Some(&r0), Some(&r1)) = (cols.first(), cols.last(), rows.first(), rows.last()) else {
-        return Err(Error::input(what, "no pixel of the file lies inside the requested box"));
+    // The pixels inside the box and one beyond each edge, or the two bracketing a box smaller
+    // than a pixel; a box across the raster's edge meridian (a global raster and a box across
+    // the antimeridian) takes its columns from both ends.
+    let distinct = super::distinct_lons(w, lon_of);
+    let runs = super::lon_runs(distinct, lon_of, subset);
+    let rows = match subset {
+        None => Some((0, h - 1)),
+        // Rows count from the north: latitude falls with the row index.
+        Some(b) => super::axis_span(h, lat_of, b.south, b.north),
     };
-    if subset.is_some() && cols.len() != c1 - c0 + 1 {
-        return Err(Error::input(
-            what,
-            "a box across this raster's edge meridian is not supported for GeoTIFF; use NetCDF",
-        ));
-    }
-    let grow = subset.is_some() as usize;
-    let (c0, c1) = (c0.saturating_sub(grow), (c1 + grow).min(w - 1));
-    let (r0, r1) = (r0.saturating_sub(grow), (r1 + grow).min(h - 1));
-    let keep_c: Vec<usize> = (c0..=c1).step_by(decimate).collect();
-    let keep_r: Vec<usize> = (r0..=r1).step_by(decimate).collect();
+    let (Some((r0, r1)), false) = (rows, runs.is_empty()) else {
+        return Err(Error::input(what, "no pixel of the file lies inside or around the requested box"));
+    };
+    let keep_c: Vec<usize> = runs
+        .iter()
+        .flat_map(|&(a, b)| (a..=super::decimated_last(a, b, decimate, distinct)).step_by(decimate))
+        .collect();
+    let keep_r: Vec<usize> = (r0..=super::decimated_last(r0, r1, decimate, h)).step_by(decimate).collect();
     let total = keep_c.len() as u64 * keep_r.len() as u64;
     if total > MAX_VALUES {
         return Err(Error::input(
@@ -150,8 +155,12 @@ pub fn read_from<R: Read + Seek>(r: R, what: &str, subset: Option<&GeoBox>, deci
         return Err(Error::input(what, "zero-sized strips or tiles"));
     }
     let across = w.div_ceil(cw);
-    for ty in r0 / ch..=r1 / ch {
-        for tx in c0 / cw..=c1 / cw {
+    let mut tile_cols: Vec<usize> = keep_c.iter().map(|&i| i / cw).collect();
+    tile_cols.dedup();
+    let mut tile_rows: Vec<usize> = keep_r.iter().map(|&j| j / ch).collect();
+    tile_rows.dedup();
+    for &ty in &tile_rows {
+        for &tx in &tile_cols {
             let index = (ty * across + tx) as u32;
             let data = dec.read_chunk(index).map_err(&err)?;
             let data_w = dec.chunk_data_dimensions(index).0 as usize;

@@ -45,6 +45,19 @@ pub const EMBEDDED: &[(&str, &[u8])] = &[
     ("salish_forecast.nc", include_bytes!("../../data/salish_forecast.nc")),
 ];
 
+/// Refuses a file of no bytes in one line that says so (rather than a format's complaint
+/// about its first bytes).
+pub(crate) fn check_not_empty(file: &DataFile) -> Result<()> {
+    let len = match file {
+        DataFile::Path(p) => std::fs::metadata(p).map(|m| m.len()).unwrap_or(1),
+        DataFile::Embedded { bytes, .. } => bytes.len() as u64,
+    };
+    if len == 0 {
+        return Err(Error::input(file.display(), "the file is empty (0 bytes)"));
+    }
+    Ok(())
+}
+
 /// The file formats bathymetry can come in, by extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
@@ -128,6 +141,103 @@ pub fn name_decimate(e: Error, decimate: usize, field: &str, file: &str) -> Erro
             format!("{decimate} leaves too few nodes of `{file}` inside the box ({message}); use a smaller value"),
         ),
         other => other,
+    }
+}
+
+/// The index range `(first, last)` of a monotonic axis (either direction) that the interval
+/// `lo..=hi` needs: the nodes inside it and one more beyond each end, or, when no node lies
+/// inside (an interval smaller than one cell), the two nodes bracketing it; so every point of
+/// the interval can be interpolated. `None` when the interval lies outside the axis.
+pub(crate) fn axis_span(n: usize, value: impl Fn(usize) -> f64, lo: f64, hi: f64) -> Option<(usize, usize)> {
+    let inside = |k: usize| (lo..=hi).contains(&value(k));
+    match ((0..n).find(|&k| inside(k)), (0..n).rev().find(|&k| inside(k))) {
+        (Some(a), Some(b)) => {
+            let (a, b) = (a.min(b), a.max(b));
+            Some((a.saturating_sub(1), (b + 1).min(n - 1)))
+        }
+        _ => (0..n.saturating_sub(1))
+            .find(|&k| {
+                let (p, q) = (value(k), value(k + 1));
+                p.min(q) < lo && p.max(q) > hi
+            })
+            .map(|k| (k, k + 1)),
+    }
+}
+
+/// The longitude index runs `(first, last)` a box needs on an increasing or decreasing axis of
+/// `n` longitudes (`value(k)`, any multiple of 360 apart from the box): the nodes inside it
+/// plus one beyond each run's ends, or the two bracketing a box narrower than one cell. On a
+/// global axis (its nodes going all the way round) the node beyond an end is taken across the
+/// axis's seam. Empty when no node is inside or brackets the box.
+pub(crate) fn lon_runs(n: usize, value: impl Fn(usize) -> f64, b: Option<&GeoBox>) -> Vec<(usize, usize)> {
+    use esri_ascii::inside_lon;
+    if n == 0 {
+        return Vec::new();
+    }
+    let Some(bx) = b else { return vec![(0, n - 1)] };
+    let step = if n > 1 { (value(n - 1) - value(0)) / (n - 1) as f64 } else { 0.0 };
+    let global = n > 2 && ((value(n - 1) - value(0)).abs() + step.abs() - 360.0).abs() < 1e-6 * step.abs().max(1e-9);
+    let mut keep: Vec<bool> = (0..n).map(|k| inside_lon(b, value(k))).collect();
+    if keep.iter().any(|&x| x) {
+        let mut grown = keep.clone();
+        for k in 0..n {
+            if keep[k] {
+                match (k.checked_sub(1), global) {
+                    (Some(p), _) => grown[p] = true,
+                    (None, true) => grown[n - 1] = true,
+                    _ => {}
+                }
+                match (k + 1 < n, global) {
+                    (true, _) => grown[k + 1] = true,
+                    (false, true) => grown[0] = true,
+                    _ => {}
+                }
+            }
+        }
+        keep = grown;
+    } else {
+        // A box between two nodes: the pair whose interval (modulo 360) holds it.
+        let pairs = (0..n - 1).map(|k| (k, k + 1)).chain(global.then_some((n - 1, 0)));
+        for (p, q) in pairs {
+            let (a, c) = if step > 0.0 { (p, q) } else { (q, p) };
+            let span = (value(c) - value(a)).rem_euclid(360.0);
+            if (bx.west - value(a)).rem_euclid(360.0) + bx.width() <= span {
+                keep[p] = true;
+                keep[q] = true;
+                break;
+            }
+        }
+    }
+    let mut runs: Vec<(usize, usize)> = Vec::new();
+    for (k, _) in keep.iter().enumerate().filter(|(_, &x)| x) {
+        match runs.last_mut() {
+            Some((_, last)) if *last + 1 == k => *last = k,
+            _ => runs.push((k, k)),
+        }
+    }
+    runs
+}
+
+/// How many of an axis's `n` longitudes to use: all but the last when it repeats the first a
+/// full turn later (global files holding both -180 and 180, or 0 and 360), which would
+/// otherwise give two columns at one place.
+pub(crate) fn distinct_lons(n: usize, value: impl Fn(usize) -> f64) -> usize {
+    if n > 2 && ((value(n - 1) - value(0)).abs() - 360.0).abs() < 1e-9 * 360.0 {
+        n - 1
+    } else {
+        n
+    }
+}
+
+/// The last index to read from `first` towards `last` every `decimate` nodes so that the
+/// kept nodes still reach `last` (the bracketing node), within an axis of `n` nodes.
+pub(crate) fn decimated_last(first: usize, last: usize, decimate: usize, n: usize) -> usize {
+    let d = decimate.max(1);
+    let end = first + (last - first).div_ceil(d) * d;
+    if end < n {
+        end
+    } else {
+        first + (n - 1 - first) / d * d
     }
 }
 

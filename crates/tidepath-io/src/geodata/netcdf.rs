@@ -13,7 +13,7 @@
 
 use netcdf_reader::{NcFile, NcSliceInfo, NcSliceInfoElem, NcVariable};
 
-use super::esri_ascii::{inside_lon, reorder_by_lon, unwrap_lon};
+use super::esri_ascii::{reorder_by_lon, unwrap_lon};
 use super::{DataFile, GeoBox, GeoGrid};
 use tidepath::error::{Error, Result};
 
@@ -71,9 +71,13 @@ pub fn open(file: &DataFile) -> Result<NcFile> {
     let opened = match file {
         DataFile::Path(path) => {
             crate::input::regular_file(path, &file.display())?;
+            super::check_not_empty(file)?;
             NcFile::open(path)
         }
-        DataFile::Embedded { bytes, .. } => NcFile::from_bytes(bytes),
+        DataFile::Embedded { bytes, .. } => {
+            super::check_not_empty(file)?;
+            NcFile::from_bytes(bytes)
+        }
     };
     opened.map_err(|e| Error::input(file.display(), format!("not a readable NetCDF file: {e}")))
 }
@@ -207,6 +211,10 @@ impl Layout {
                 return Err(Error::input(what, format!("coordinate `{name}` is not monotonic and finite")));
             }
         }
+        // A global axis holding both -180 and 180 (or 0 and 360): the last column repeats
+        // the first, so it is left out.
+        let mut lon = lon;
+        lon.truncate(super::distinct_lons(lon.len(), |k| lon[k]));
         if lat.iter().any(|v| v.abs() > 90.0) {
             return Err(Error::input(what, format!("latitude `{}` has values beyond 90 degrees", yv.name())));
         }
@@ -303,29 +311,21 @@ impl Layout {
     /// they make, checked against [`MAX_VALUES`] before anything is read.
     pub(crate) fn box_runs(&self, subset: Option<&GeoBox>, decimate: usize, what: &str) -> Result<BoxRuns> {
         let decimate = decimate.max(1);
-        // Longitude index runs inside the box (at most two on a monotonic axis of <= 360 degrees).
-        let kept_x: Vec<usize> = (0..self.lon.len()).filter(|&i| inside_lon(subset, self.lon[i])).collect();
-        let kept_y: Vec<usize> = (0..self.lat.len())
-            .filter(|&j| subset.is_none_or(|b| (b.south..=b.north).contains(&self.lat[j])))
-            .collect();
-        // One more node beyond each edge, so every point of the box lies between nodes that
-        // were read (interpolation needs the bracketing nodes).
         let (nlon, nlat) = (self.lon.len(), self.lat.len());
-        let mut runs: Vec<(usize, usize)> = Vec::new();
-        for (a, b) in runs_of(&kept_x) {
-            let r = if subset.is_some() { (a.saturating_sub(1), (b + 1).min(nlon - 1)) } else { (a, b) };
-            match runs.last_mut() {
-                Some(last) if r.0 <= last.1 + 1 => last.1 = last.1.max(r.1),
-                _ => runs.push(r),
-            }
-        }
-        let (y0, y1) = match (kept_y.first(), kept_y.last()) {
-            (Some(&a), Some(&b)) if subset.is_some() => (a.saturating_sub(1), (b + 1).min(nlat - 1)),
-            (Some(&a), Some(&b)) => (a, b),
-            _ => return Err(Error::input(what, "no latitude of the file lies inside the requested box")),
+        // The nodes inside the box and one beyond each edge, or the two bracketing a box
+        // smaller than one cell: every point of the box lies between nodes that are read.
+        let runs: Vec<(usize, usize)> = super::lon_runs(nlon, |k| self.lon[k], subset)
+            .into_iter()
+            .map(|(a, b)| (a, super::decimated_last(a, b, decimate, nlon)))
+            .collect();
+        let (y0, y1) = match subset {
+            None => (0, nlat - 1),
+            Some(b) => super::axis_span(nlat, |k| self.lat[k], b.south, b.north)
+                .ok_or_else(|| Error::input(what, "no latitude of the file lies inside or around the requested box"))?,
         };
+        let y1 = super::decimated_last(y0, y1, decimate, nlat);
         if runs.is_empty() {
-            return Err(Error::input(what, "no longitude of the file lies inside the requested box"));
+            return Err(Error::input(what, "no longitude of the file lies inside or around the requested box"));
         }
         let ny = (y1 - y0) / decimate + 1;
         let nx: usize = runs.iter().map(|&(a, b)| (b - a) / decimate + 1).sum();
@@ -347,16 +347,4 @@ pub(crate) struct BoxRuns {
     y1: usize,
     pub(crate) nx: usize,
     pub(crate) ny: usize,
-}
-
-/// Maximal runs of consecutive indices, as (first, last).
-fn runs_of(idx: &[usize]) -> Vec<(usize, usize)> {
-    let mut out: Vec<(usize, usize)> = Vec::new();
-    for &i in idx {
-        match out.last_mut() {
-            Some((_, last)) if *last + 1 == i => *last = i,
-            _ => out.push((i, i)),
-        }
-    }
-    out
 }

@@ -7,9 +7,10 @@
 //! * Mission starts and goals and obstacle centres are projected; an obstacle box's corners
 //!   are projected and the box holding them is used (a conservative approximation).
 //! * A bathymetry file is read inside the longitude/latitude box that covers the metric
-//!   domain, then resampled (bilinear) onto a metric grid at the file's own resolution unless
-//!   `resolution` says otherwise. Nodes without data (fill values, outside the file) are taken
-//!   as land, [`NO_DATA_ELEVATION`], and counted in a warning.
+//!   domain, then resampled onto a metric grid at the file's own resolution unless
+//!   `resolution` says otherwise, as an envelope nowhere below the file's own surface
+//!   (`resample.rs` says why it holds). Nodes without data (fill values, outside the file)
+//!   are taken as land, [`NO_DATA_ELEVATION`], and counted in a warning.
 //! * Other positions (peaks, vortices, current grids, jet regions) stay metres in the local
 //!   frame, whose origin is the box centre.
 
@@ -17,25 +18,16 @@ use std::path::{Path, PathBuf};
 
 use chrono::{DateTime, Utc};
 
+use super::resample::{resample, water_test, MetricGrid};
 use super::spec::*;
 use crate::geodata::currents::read_currents;
 use crate::geodata::currents::MAX_FORECAST_VALUES;
 use crate::geodata::netcdf::{read_bathymetry, Positive};
-use crate::geodata::{esri_ascii, name_decimate, DataFile, Format, GeoBox, GeoGrid, EMBEDDED};
+use crate::geodata::{esri_ascii, name_decimate, DataFile, Format, GeoBox, EMBEDDED};
 use tidepath::error::{Error, Result};
 use tidepath::geo::GeoFrame;
 
-/// Elevation (m) given to nodes without data: land, above the sea surface.
-pub const NO_DATA_ELEVATION: f64 = 10.0;
-
-/// Most nodes of a resampled metric grid: 4 million (a 2000 x 2000 grid). A finer request is
-/// coarsened to fit, with a warning.
-pub const MAX_GRID_NODES: usize = 4_000_000;
-
-/// Finest and coarsest `resolution` (m) of a resampled grid: a centimetre is finer than any
-/// survey; beyond 1,000 km there is nothing left to resample.
-pub const MIN_RESOLUTION_M: f64 = 0.01;
-pub const MAX_RESOLUTION_M: f64 = 1e6;
+pub use super::resample::{MAX_GRID_NODES, MAX_RESOLUTION_M, MIN_RESOLUTION_M, NO_DATA_ELEVATION};
 
 /// A spec in metres, with the frame and clock it came from.
 pub(crate) struct Localised {
@@ -235,7 +227,19 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
 }
 
 /// The longitude/latitude box holding the metric rectangle `lo`..`hi`, with a margin of 1%.
+/// A rectangle around a pole has no such box (its longitudes go all the way round and its
+/// edges never reach the pole's latitude): refused in one line.
 fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
+    for (pole, lat) in [("North", 90.0), ("South", -90.0)] {
+        if let Ok((x, y)) = frame.forward(frame.lon0, lat, "world.bounds") {
+            if (lo[0]..=hi[0]).contains(&x) && (lo[1]..=hi[1]).contains(&y) {
+                return Err(Error::input(
+                    "world.bounds",
+                    format!("the metric domain (the rectangle holding the projected box) contains the {pole} Pole, which data files cannot be read around by longitude/latitude: keep the box clear of the pole"),
+                ));
+            }
+        }
+    }
     let (mut west, mut east, mut south, mut north) =
         (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
     const SAMPLES: usize = 64;
@@ -286,112 +290,6 @@ fn data_file(path: &str, source: &str, field: &str) -> Result<DataFile> {
         }
     }
     Ok(DataFile::Path(full))
-}
-
-/// A regular metric grid over `lo`..`hi` and where each of its nodes lies in degrees: found
-/// once per data file and used for every layer resampled onto it (bathymetry, or each time
-/// step of u and v), since the geodesic computations are the costly part.
-struct MetricGrid {
-    origin: [f64; 2],
-    spacing: [f64; 2],
-    shape: [usize; 2],
-    /// (lon, lat) of each node, row-major.
-    lonlat: Vec<(f64, f64)>,
-}
-
-impl MetricGrid {
-    /// Spacing `resolution`, by default `g`'s own at its middle latitude; coarsened (with a
-    /// warning naming `field`) to stay within `max_nodes` (at most [`MAX_GRID_NODES`]).
-    fn new(
-        g: &GeoGrid,
-        frame: &GeoFrame,
-        (lo, hi): ([f64; 2], [f64; 2]),
-        resolution: Option<f64>,
-        max_nodes: usize,
-        field: &str,
-        warnings: &mut Vec<String>,
-    ) -> Result<Self> {
-        let lat_mid = (g.lat[0] + g.lat[g.ny() - 1]) / 2.0;
-        let native = {
-            let dlon = (g.lon[g.nx() - 1] - g.lon[0]) / (g.nx() - 1) as f64;
-            let dlat = (g.lat[g.ny() - 1] - g.lat[0]) / (g.ny() - 1) as f64;
-            (dlon * 111_320.0 * lat_mid.to_radians().cos()).min(dlat * 110_540.0)
-        };
-        let mut spacing = match resolution {
-            Some(r) if (MIN_RESOLUTION_M..=MAX_RESOLUTION_M).contains(&r) => r,
-            Some(r) => {
-                return Err(Error::input(
-                    field,
-                    format!("must be from {MIN_RESOLUTION_M} to {MAX_RESOLUTION_M} m, got {r:?}"),
-                ))
-            }
-            None => native.max(MIN_RESOLUTION_M),
-        };
-        let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
-        let nodes = |sp: f64| ((w / sp).ceil() as usize + 1, (h / sp).ceil() as usize + 1);
-        let (mut nx, mut ny) = nodes(spacing);
-        let max_nodes = max_nodes.clamp(4, MAX_GRID_NODES);
-        if (nx as f64) * (ny as f64) > max_nodes as f64 {
-            spacing *= ((nx as f64 * ny as f64) / max_nodes as f64).sqrt() * 1.01;
-            (nx, ny) = nodes(spacing);
-            while nx * ny > max_nodes && nx * ny > 4 {
-                spacing *= 1.01;
-                (nx, ny) = nodes(spacing);
-            }
-            warnings.push(format!("{field}: resampled at {spacing:.0} m so the grid stays within {max_nodes} nodes"));
-        }
-        let (dx, dy) = (w / (nx - 1) as f64, h / (ny - 1) as f64);
-        let mut lonlat = Vec::with_capacity(nx * ny);
-        for j in 0..ny {
-            for i in 0..nx {
-                lonlat.push(frame.inverse(lo[0] + i as f64 * dx, lo[1] + j as f64 * dy));
-            }
-        }
-        Ok(Self { origin: lo, spacing: [dx, dy], shape: [nx, ny], lonlat })
-    }
-
-    /// The metric position of node `k`.
-    fn xy(&self, k: usize) -> (f64, f64) {
-        let [nx, _] = self.shape;
-        (self.origin[0] + (k % nx) as f64 * self.spacing[0], self.origin[1] + (k / nx) as f64 * self.spacing[1])
-    }
-
-    /// `g` bilinear at every node, `NaN` where it has no data. `valid_only` leaves out corners
-    /// without data ([`GeoGrid::sample_valid`]) instead of giving up on the node.
-    fn sample(&self, g: &GeoGrid, valid_only: bool) -> Vec<f64> {
-        let lon_first = g.lon[0];
-        self.lonlat
-            .iter()
-            .map(|&(lon, lat)| {
-                // Into the grid's longitude range (which may run past 180).
-                let lon = lon_first + (lon - lon_first).rem_euclid(360.0);
-                let value = if valid_only { g.sample_valid(lon, lat) } else { g.sample(lon, lat) };
-                value.filter(|v| v.is_finite()).unwrap_or(f64::NAN)
-            })
-            .collect()
-    }
-}
-
-/// The bathymetry resampled onto a metric grid over `lo`..`hi`; nodes without data are land.
-fn resample(
-    g: &GeoGrid,
-    frame: &GeoFrame,
-    lo: [f64; 2],
-    hi: [f64; 2],
-    resolution: Option<f64>,
-    warnings: &mut Vec<String>,
-) -> Result<TerrainSpec> {
-    let m = MetricGrid::new(g, frame, (lo, hi), resolution, MAX_GRID_NODES, "world.terrain.resolution", warnings)?;
-    let mut z = m.sample(g, false);
-    let missing = z.iter().filter(|v| v.is_nan()).count();
-    if missing > 0 {
-        z.iter_mut().filter(|v| v.is_nan()).for_each(|v| *v = NO_DATA_ELEVATION);
-        warnings.push(format!(
-            "world.terrain: {missing} of {} nodes have no data in the file (fill or outside it) and are taken as land",
-            z.len()
-        ));
-    }
-    Ok(TerrainSpec::Grid { origin: m.origin, spacing: m.spacing, shape: m.shape, elevations: z })
 }
 
 /// Reads a current forecast file and rewrites `world.current` as a metric grid on the
@@ -482,17 +380,4 @@ fn load_currents(
 /// A horizontal vector given east and north at the frame point (x, y), in the frame's x and y.
 fn east_north_to_frame(frame: &GeoFrame, x: f64, y: f64, east: f64, north: f64) -> (f64, f64) {
     frame.east_north_to_xy(frame.inverse(x, y), (x, y), east, north)
-}
-
-/// Whether a metric point is water (seabed below the sea surface) in a resampled terrain grid;
-/// everything is water without terrain.
-fn water_test(terrain: &TerrainSpec) -> impl Fn(f64, f64) -> bool + '_ {
-    move |x, y| match terrain {
-        TerrainSpec::Grid { origin, spacing, shape, elevations } => {
-            let i = (((x - origin[0]) / spacing[0]).round().max(0.0) as usize).min(shape[0] - 1);
-            let j = (((y - origin[1]) / spacing[1]).round().max(0.0) as usize).min(shape[1] - 1);
-            elevations[j * shape[0] + i] < 0.0
-        }
-        _ => true,
-    }
 }

@@ -11,6 +11,7 @@ mod geo_cover;
 pub mod geographic;
 mod jet;
 mod plan;
+mod resample;
 mod route_frame;
 pub mod spec;
 
