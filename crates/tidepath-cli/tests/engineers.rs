@@ -62,7 +62,7 @@ fn places_are_given_back_in_degrees_and_arrivals_in_utc() {
         err.trim_end(),
         "error: --from: mission.start: 48.9000 N, 124.5000 W, depth 30.0 m is outside the domain 48.0947 N to 48.8052 N, 125.2152 W to 122.9848 W, depth 0.0 to 300.0 m"
     );
-    let o = tidepath(&["plan", "salish-forecast", "--planner", "astar"], dir.path());
+    let o = tidepath(&["plan", "salish-forecast", "--planner", "theta-star"], dir.path());
     let (out, _) = text(&o);
     let line = out.lines().find(|l| l.contains("travel time")).unwrap();
     // The forecast's scenario departs at 2025-11-12T03:00:00Z.
@@ -99,7 +99,7 @@ fn every_export_is_read_back_by_eval_and_plan_init() {
     let d = dir.path();
     for ext in ["json", "geojson", "gpx", "kml", "csv"] {
         let out = format!("route.{ext}");
-        let o = tidepath(&["plan", "salish-forecast", "--planner", "astar", "--out", &out], d);
+        let o = tidepath(&["plan", "salish-forecast", "--planner", "theta-star", "--out", &out], d);
         assert_eq!(o.status.code(), Some(0), "{}", text(&o).1);
         let o = tidepath(&["eval", "salish-forecast", &out], d);
         let (stdout, stderr) = text(&o);

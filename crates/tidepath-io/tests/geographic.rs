@@ -32,7 +32,7 @@ fn a_band_below_the_sill_is_unreachable_and_the_sill_is_named_in_degrees() {
     let s = Scenario::from_toml(&text, "builtin:deep").unwrap();
     let r = s.plan(&PlanRequest::default(), &mut |_| {}).unwrap();
     assert_eq!(r.status, Status::Unreachable, "{}", r.reason);
-    assert!(r.reason.contains("63.6 m at 48.4030 N, 123.1707 W"), "{}", r.reason);
+    assert!(r.reason.contains("63.6 m at (48.4030 N, 123.1707 W)"), "{}", r.reason);
 }
 
 #[test]
