@@ -32,7 +32,8 @@ pub struct BudgetArgs {
 }
 
 impl BudgetArgs {
-    /// These limits as an experiment's budget, with `time_limit_s`.
+    /// These limits as an experiment's budget, with `time_limit_s` (no smoother: `--smooth` is
+    /// its own flag).
     pub fn budget(&self, time_limit_s: Option<f64>) -> tidepath_experiments::compare::RunBudget {
         tidepath_experiments::compare::RunBudget {
             iterations: self.iterations,
@@ -42,6 +43,7 @@ impl BudgetArgs {
             target_cost: self.target_cost,
             population: self.population,
             time_limit_s,
+            smoother: None,
         }
     }
 }

@@ -1,41 +1,102 @@
-//! Per-planner rows of a comparison: the statistics the papers report, computed once.
+//! Per-planner rows of a comparison: the statistics the papers report, computed once, each
+//! over the runs it names (all runs, or the feasible ones).
+
+mod markdown;
 
 use serde::{Deserialize, Serialize};
 
-use super::stats::{compare_to_reference, Summary};
+pub use markdown::{legend, mark_cells, markdown, reference_line, NO_FEASIBLE_RUN};
+
+use super::stats::{compare_to_reference, smallest_p, Mark, Summary};
 use super::RunRecord;
 use tidepath::planner::Status;
 
 /// Significance level of the rank-sum marks (lfhh2019 uses 0.05).
 pub const ALPHA: f64 = 0.05;
 
+/// How a row's planner compares with the first planner in the rank-sum test (the table's last
+/// column), worded from the row's side: "better" means this row's costs are significantly lower.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum RowMark {
+    /// Significantly lower costs than the first planner.
+    Better,
+    /// Significantly higher costs than the first planner.
+    Worse,
+    /// No significant difference, at a sample size where one could have been found.
+    Similar,
+    /// No p-value below alpha is possible with these run counts, whatever the data.
+    Undecidable,
+}
+
+impl RowMark {
+    /// From the papers' mark (which speaks for the first planner) and the smallest p-value the
+    /// test could have reached.
+    pub fn from_reference_mark(mark: Mark, smallest_p: f64, alpha: f64) -> Self {
+        match mark {
+            Mark::Better => RowMark::Worse,
+            Mark::Worse => RowMark::Better,
+            Mark::Similar if smallest_p >= alpha => RowMark::Undecidable,
+            Mark::Similar => RowMark::Similar,
+        }
+    }
+
+    pub fn word(self) -> &'static str {
+        match self {
+            RowMark::Better => "better",
+            RowMark::Worse => "worse",
+            RowMark::Similar => "≈",
+            RowMark::Undecidable => "undecidable",
+        }
+    }
+}
+
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct PlannerRow {
     pub problem: String,
     pub planner: String,
+    /// Runs that finished: the denominator of every all-runs statistic.
     pub runs: usize,
+    /// Runs whose path is feasible (every run of a function benchmark): the denominator of the
+    /// feasible-only statistics.
+    #[serde(default)]
+    pub feasible_runs: usize,
+    /// Cost over all runs, penalties for violations included (an infeasible run's cost carries
+    /// them): the papers' columns and what the rank-sum test compares.
     pub best: f64,
     pub mean: f64,
     pub std: f64,
     pub worst: f64,
     pub median: f64,
-    /// Share of runs whose path is feasible.
+    /// Share of runs whose path is feasible: `feasible_runs / runs`.
     pub success_rate: f64,
-    /// Means over all runs; `None` for function benchmarks.
+    /// Best and mean cost over the feasible runs only; `None` without a feasible run.
+    #[serde(default)]
+    pub feasible_best: Option<f64>,
+    #[serde(default)]
+    pub feasible_mean: Option<f64>,
+    /// Mean length and travel time over the feasible runs only (an infeasible path may be short
+    /// because it cuts through an obstacle); `None` without a feasible run and for function
+    /// benchmarks.
     pub mean_length_m: Option<f64>,
     pub mean_travel_time_s: Option<f64>,
+    /// Over all runs.
     pub mean_evaluations: f64,
-    /// Timing field: mean wall time per run (s).
+    /// Timing field: mean wall time per run (s), over all runs.
     pub mean_wall_s: f64,
-    /// Runs whose cost is exactly 0, and below 1e-300 (amfa2015's "0 times" columns).
+    /// Runs whose cost is exactly 0, and below 1e-300 (amfa2015's "0 times" columns), of `runs`.
     pub zeros_exact: usize,
     pub zeros_tiny: usize,
-    /// Two-sided Wilcoxon rank-sum test against the first planner: `+` the first planner is
-    /// significantly better, `≈` no significant difference, `-` significantly worse. `None`
+    /// Two-sided Wilcoxon rank-sum test of this row's costs (all runs) against the first
+    /// planner's, from this row's side: `better`, `worse`, `similar` or `undecidable`. `None`
     /// for the first planner itself.
-    pub mark: Option<String>,
+    pub mark: Option<RowMark>,
     pub p_value: Option<f64>,
-    /// Gap of the mean and of the best cost to the reference plan's cost, in percent.
+    /// The smallest p-value the test could have returned with these run counts, whatever the
+    /// costs: at or above alpha the mark is `undecidable`.
+    #[serde(default)]
+    pub smallest_p: Option<f64>,
+    /// Gap of the feasible runs' mean and best cost to the reference plan's cost, in percent.
     #[serde(default)]
     pub gap_percent: Option<f64>,
     #[serde(default)]
@@ -54,7 +115,23 @@ fn mean(xs: impl Iterator<Item = f64>) -> f64 {
     }
 }
 
-/// Rows for one problem; `planners` in report order, the first is the reference.
+/// Mean of the values present; `None` when there is none.
+fn mean_of(xs: impl Iterator<Item = Option<f64>>) -> Option<f64> {
+    let v: Vec<f64> = xs.flatten().collect();
+    (!v.is_empty()).then(|| mean(v.into_iter()))
+}
+
+/// The rank-sum verdict of `costs` against the first planner's `reference` costs, from the
+/// row's side, with the p-value and the smallest p-value reachable at these sizes.
+fn mark(reference: &[f64], costs: &[f64]) -> (RowMark, f64, f64) {
+    let (m, r) = compare_to_reference(reference, costs, ALPHA);
+    let n = |xs: &[f64]| xs.iter().filter(|v| !v.is_nan()).count();
+    let floor = smallest_p(r.method, n(reference), n(costs));
+    (RowMark::from_reference_mark(m, floor, ALPHA), r.p_value, floor)
+}
+
+/// Rows for one problem; `planners` in report order, the first is the one the others are
+/// marked against.
 pub fn rows_for(problem: &str, planners: &[String], records: &[RunRecord]) -> Vec<PlannerRow> {
     let of = |p: &str| records.iter().filter(|r| r.problem == problem && r.planner == p).collect::<Vec<_>>();
     let reference: Vec<f64> = planners.first().map(|p| of(p).iter().map(|r| r.cost).collect()).unwrap_or_default();
@@ -65,38 +142,37 @@ pub fn rows_for(problem: &str, planners: &[String], records: &[RunRecord]) -> Ve
             let runs = of(p);
             let costs: Vec<f64> = runs.iter().map(|r| r.cost).collect();
             let s = Summary::of(&costs);
-            let (mark, p_value) = if i == 0 || costs.is_empty() || reference.is_empty() {
-                (None, None)
+            let feasible: Vec<&&RunRecord> = runs.iter().filter(|r| r.feasible).collect();
+            let feasible_costs: Vec<f64> = feasible.iter().map(|r| r.cost).collect();
+            let fs = Summary::of(&feasible_costs);
+            let (mark, p_value, smallest_p) = if i == 0 || costs.is_empty() || reference.is_empty() {
+                (None, None, None)
             } else {
-                let (m, r) = compare_to_reference(&reference, &costs, ALPHA);
-                (Some(m.symbol().to_string()), Some(r.p_value))
-            };
-            let opt_mean = |f: &dyn Fn(&RunRecord) -> Option<f64>| {
-                let v: Vec<f64> = runs.iter().filter_map(|r| f(r)).collect();
-                (!v.is_empty()).then(|| mean(v.into_iter()))
+                let (m, p, floor) = mark(&reference, &costs);
+                (Some(m), Some(p), Some(floor))
             };
             PlannerRow {
                 problem: problem.to_string(),
                 planner: p.clone(),
                 runs: runs.len(),
+                feasible_runs: feasible.len(),
                 best: s.as_ref().map_or(f64::NAN, |s| s.best),
                 mean: s.as_ref().map_or(f64::NAN, |s| s.mean),
                 std: s.as_ref().map_or(f64::NAN, |s| s.std),
                 worst: s.as_ref().map_or(f64::NAN, |s| s.worst),
                 median: s.as_ref().map_or(f64::NAN, |s| s.median),
-                success_rate: if runs.is_empty() {
-                    0.0
-                } else {
-                    runs.iter().filter(|r| r.feasible).count() as f64 / runs.len() as f64
-                },
-                mean_length_m: opt_mean(&|r| r.length_m),
-                mean_travel_time_s: opt_mean(&|r| r.travel_time_s),
+                success_rate: if runs.is_empty() { 0.0 } else { feasible.len() as f64 / runs.len() as f64 },
+                feasible_best: fs.map(|s| s.best),
+                feasible_mean: fs.map(|s| s.mean),
+                mean_length_m: mean_of(feasible.iter().map(|r| r.length_m)),
+                mean_travel_time_s: mean_of(feasible.iter().map(|r| r.travel_time_s)),
                 mean_evaluations: mean(runs.iter().map(|r| r.evaluations as f64)),
                 mean_wall_s: mean(runs.iter().map(|r| r.elapsed_s)),
                 zeros_exact: costs.iter().filter(|c| **c == 0.0).count(),
                 zeros_tiny: costs.iter().filter(|c| c.abs() < 1e-300).count(),
                 mark,
                 p_value,
+                smallest_p,
                 gap_percent: None,
                 best_gap_percent: None,
                 statuses: Status::ALL
@@ -109,7 +185,8 @@ pub fn rows_for(problem: &str, planners: &[String], records: &[RunRecord]) -> Ve
         .collect()
 }
 
-/// Compact number for tables: 4 significant digits, scientific outside [1e-3, 1e5).
+/// Compact number for single values: 4 significant digits, scientific outside [1e-3, 1e5).
+/// Table columns use [`crate::columns::ColumnFormat`] instead, one format per column.
 pub fn num(x: f64) -> String {
     if !x.is_finite() {
         return format!("{x}");
@@ -126,87 +203,5 @@ pub fn num(x: f64) -> String {
     }
 }
 
-/// The Markdown table `compare` prints.
-pub fn markdown(rows: &[PlannerRow], functions: bool) -> String {
-    let reference = rows.first().map(|r| r.planner.as_str()).unwrap_or("");
-    // A column for each status that occurred, in order of severity.
-    let statuses: Vec<&str> = Status::ALL
-        .iter()
-        .map(|s| s.id())
-        .filter(|id| rows.iter().any(|r| r.statuses.iter().any(|(n, c)| n == id && *c > 0)))
-        .collect();
-    let mut out = String::new();
-    if functions {
-        out.push_str(&format!(
-            "| problem | planner | best | mean | std | worst | f = 0 | f < 1e-300 | evals/run | wall s/run | vs {reference} |\n"
-        ));
-        out.push_str("|---|---|---|---|---|---|---|---|---|---|---|\n");
-    } else {
-        let extra: String = statuses.iter().map(|s| format!(" {s} |")).collect();
-        out.push_str(&format!(
-            "| planner | best | mean | std | worst | gap % best / mean | success |{extra} length m | travel s | evals/run | wall s/run | vs {reference} |\n"
-        ));
-        out.push_str(&format!("|---|---|---|---|---|---|---|{}---|---|---|---|---|\n", "---|".repeat(statuses.len())));
-    }
-    for r in rows {
-        let mark = match (&r.mark, r.p_value) {
-            (Some(m), Some(p)) => format!("{m} (p={})", num(p)),
-            _ => "ref".into(),
-        };
-        let opt = |v: Option<f64>| v.map_or("-".to_string(), num);
-        if functions {
-            out.push_str(&format!(
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {:.0} | {} | {} |\n",
-                r.problem,
-                r.planner,
-                num(r.best),
-                num(r.mean),
-                num(r.std),
-                num(r.worst),
-                r.zeros_exact,
-                r.zeros_tiny,
-                r.mean_evaluations,
-                num(r.mean_wall_s),
-                mark
-            ));
-        } else {
-            let gap = match (r.best_gap_percent, r.gap_percent) {
-                (Some(b), Some(m)) => format!("{b:.2} / {m:.2}"),
-                _ => "-".to_string(),
-            };
-            let counts: String = statuses
-                .iter()
-                .map(|s| format!(" {} |", r.statuses.iter().find(|(n, _)| n == s).map_or(0, |(_, c)| *c)))
-                .collect();
-            out.push_str(&format!(
-                "| {} | {} | {} | {} | {} | {gap} | {:.0}% |{counts} {} | {} | {:.0} | {} | {} |\n",
-                r.planner,
-                num(r.best),
-                num(r.mean),
-                num(r.std),
-                num(r.worst),
-                100.0 * r.success_rate,
-                opt(r.mean_length_m),
-                opt(r.mean_travel_time_s),
-                r.mean_evaluations,
-                num(r.mean_wall_s),
-                mark
-            ));
-        }
-    }
-    out
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn numbers_keep_four_significant_digits() {
-        assert_eq!(num(1.23456), "1.235");
-        assert_eq!(num(123.456), "123.5");
-        assert_eq!(num(0.0), "0");
-        assert_eq!(num(1.5e-7), "1.500e-7");
-        assert_eq!(num(2.5e6), "2.500e6");
-    }
-}
+mod tests;
