@@ -1,6 +1,7 @@
-//! Numbers that mean what they say (issue #26, items 3 and 4): `compare` keeps infeasible
+//! Numbers that mean what they say (issue #26, items 3, 4 and 8): `compare` keeps infeasible
 //! runs out of length, time and gap and says so; `reproduce` with too few runs calls its
-//! verdicts undecidable.
+//! verdicts undecidable; usage errors keep clap's tip; every flag is described; `compare
+//! --smooth` smooths every run and records it.
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -103,4 +104,96 @@ fn reproduce_with_two_runs_calls_its_claims_undecidable() {
     // Every "0" count has its denominator: the paper's of 30, ours of 2.
     let griewank = report.lines().find(|l| l.starts_with("| griewank-d30-small | pso |")).unwrap();
     assert!(griewank.contains("| 7/30 | ") && griewank.matches("/2 |").count() == 2, "{griewank}");
+}
+
+#[test]
+fn a_mistyped_flag_keeps_clap_s_tip_and_points_at_the_subcommand_help() {
+    for (args, tip, help) in [
+        (
+            &["compare", "headland", "--planner", "pso"][..],
+            "a similar argument exists: '--planners'",
+            "`tidepath compare --help`",
+        ),
+        (
+            &["plan", "headland", "--planners", "pso"][..],
+            "a similar argument exists: '--planner'",
+            "`tidepath plan --help`",
+        ),
+        (
+            &["bench", "functions", "--algo", "pso", "--funcs", "sphere"][..],
+            "'--algos'",
+            "`tidepath bench functions --help`",
+        ),
+    ] {
+        let o = tidepath(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(tip) && err.contains(help), "{args:?}: {err}");
+    }
+}
+
+/// Every flag of every subcommand says what it does in `-h` (`bench functions --jobs` and
+/// `--seed` once had no text).
+#[test]
+fn every_flag_has_a_description() {
+    for sub in [&["plan"][..], &["eval"], &["compare"], &["bench", "functions"], &["reproduce"], &["planners"]] {
+        let o = tidepath(&[sub, &["-h"]].concat());
+        let help = stdout(&o);
+        for line in help.lines().filter(|l| l.trim_start().starts_with('-')) {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            // `--flag <VALUE>  text`, `-h, --help  text`: something after the flag and its value.
+            let described =
+                words.iter().skip(1).any(|w| !w.starts_with('<') && !w.starts_with("--") && !w.ends_with(','));
+            assert!(described, "{sub:?}: no description in `{line}`");
+        }
+    }
+}
+
+/// `compare --smooth` takes `plan --smooth`'s syntax, smooths every compared run, and
+/// results.json records it; a bad smoother is refused naming the flag before any run.
+#[test]
+fn compare_smooths_every_run_and_records_the_smoother() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |smooth: &str, out: &str| {
+        let out = dir.path().join(out);
+        let o = tidepath(&[
+            "compare",
+            "demo",
+            "--planners",
+            "pso",
+            "--runs",
+            "2",
+            "--iterations",
+            "10",
+            "--reference",
+            "none",
+            "--smooth",
+            smooth,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+        (stdout(&o), json(&out.join("results.json")), std::fs::read_to_string(out.join("table.md")).unwrap())
+    };
+    let (text, smoothed, table) = run("shortcut:passes=2", "s");
+    assert!(text.contains("Smoother: every compared run's path went through shortcut:passes=2."), "{text}");
+    assert!(table.contains("shortcut:passes=2"), "{table}");
+    let expected = serde_json::json!({ "id": "shortcut", "params": { "passes": 2 } });
+    assert_eq!(smoothed["budget"]["smoother"], expected);
+    assert_eq!(smoothed["smoother"], expected);
+    let (_, raw, _) = run("none", "n");
+    assert!(raw["smoother"].is_null());
+    // The same seeds, with and without the shortcut: every smoothed path has fewer waypoints.
+    let points = |v: &serde_json::Value| -> Vec<usize> {
+        v["records"].as_array().unwrap().iter().map(|r| r["waypoints"].as_array().unwrap().len()).collect()
+    };
+    for (s, r) in points(&smoothed).into_iter().zip(points(&raw)) {
+        assert!(s < r, "smoothed {s} waypoints, raw {r}");
+    }
+    let bad = dir.path().join("bad");
+    let o = tidepath(&["compare", "demo", "--planners", "pso", "--smooth", "nope", "--out", bad.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).starts_with("error: --smooth: unknown smoother 'nope'"));
+    assert!(!bad.exists());
 }

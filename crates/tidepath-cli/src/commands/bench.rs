@@ -61,8 +61,11 @@ pub struct FunctionsArgs {
     /// Runs per pair.
     #[arg(long, default_value_t = 30)]
     pub runs: u64,
+    /// Parallel runs (default: all cores). Results do not depend on it.
     #[arg(long)]
     pub jobs: Option<usize>,
+    /// Master seed; each run's seed is derived from it (printed per run in runs.csv), so the
+    /// same seed repeats every run bit for bit.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
     /// Write results.json, runs.csv, table.md, convergence.svg and boxplot.svg here.

@@ -48,6 +48,22 @@ impl BudgetArgs {
     }
 }
 
+/// `--smooth`, shared by `plan` and `compare` so that it reads and parses the same in both.
+#[derive(Args)]
+pub struct SmoothArgs {
+    /// Smooth every planned path: a smoother id with optional parameters, `ID[:KEY=VALUE,...]`
+    /// (e.g. `shortcut:passes=3`), or `none` to override the scenario's smoother.
+    #[arg(long)]
+    pub smooth: Option<String>,
+}
+
+impl SmoothArgs {
+    /// The smoother id and its parameters, when `--smooth` was given.
+    pub fn parsed(&self) -> Result<Option<(String, Option<toml::Table>)>, tidepath::Error> {
+        self.smooth.as_deref().map(parse_smooth).transpose()
+    }
+}
+
 /// Parses `--smooth ID[:KEY=VALUE,...]` into the smoother id and its parameter table (values
 /// as TOML would read them: `passes=3`, `radius=25.5`, `mode="fast"`).
 pub fn parse_smooth(text: &str) -> Result<(String, Option<toml::Table>), tidepath::Error> {

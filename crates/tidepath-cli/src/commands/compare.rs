@@ -2,7 +2,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use tidepath::Error;
-use tidepath_experiments::compare::{compare_scenario, default_reference, request, RunBudget};
+use tidepath_experiments::compare::{compare_scenario, default_reference, request, RunBudget, Smoothing};
 use tidepath_experiments::output;
 use tidepath_experiments::runner::RunControl;
 use tidepath_io::scenario;
@@ -23,6 +23,8 @@ pub struct CompareArgs {
     pub runs: u64,
     #[command(flatten)]
     pub run: super::budget::BudgetArgs,
+    #[command(flatten)]
+    pub smoothing: super::budget::SmoothArgs,
     /// Wall-time limit per run in seconds (a safety net: runs it stops depend on the machine).
     #[arg(long)]
     pub time_limit: Option<f64>,
@@ -42,7 +44,11 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
     let jobs = crate::jobs(args.run.jobs)?;
     tidepath_experiments::compare::check_runs(args.runs)?;
-    let budget = args.run.budget(args.time_limit);
+    let mut budget = args.run.budget(args.time_limit);
+    budget.smoother = args.smoothing.parsed()?.map(|(id, params)| Smoothing { id, params });
+    if let Some(id) = budget.smoother.as_ref().map(|s| s.id.as_str()).filter(|id| *id != "none") {
+        tidepath::smoothing::registry().get(id).map_err(|e| e.for_field("--smooth"))?;
+    }
     let reference = match args.reference.as_deref() {
         Some("none") => None,
         Some(id) => Some(id.to_string()),
