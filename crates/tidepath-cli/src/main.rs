@@ -6,6 +6,7 @@
 
 mod commands;
 mod progress;
+mod usage;
 
 use std::process::ExitCode;
 
@@ -116,15 +117,7 @@ fn parse() -> Result<Cli, ExitCode> {
             ExitCode::from(2)
         }
         _ => {
-            let text = e.render().to_string();
-            // The first paragraph (clap may wrap it over several lines), on one line.
-            let first: Vec<&str> = text
-                .lines()
-                .skip_while(|l| l.trim().is_empty())
-                .take_while(|l| !l.trim().is_empty())
-                .map(str::trim)
-                .collect();
-            eprintln!("{} (see `tidepath --help`)", first.join(" "));
+            eprintln!("{}", usage::one_line(&e.render().to_string()));
             ExitCode::from(2)
         }
     })

@@ -1,4 +1,5 @@
-//! End-to-end tests of `compare`, `bench functions` and `reproduce` (issue #3).
+//! End-to-end tests of `compare`, `bench functions` and `reproduce` (issue #3); `reproduce`'s
+//! report is checked in `numbers.rs`, with its verdicts at too few runs.
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -105,20 +106,4 @@ fn bench_functions_reports_sphere_near_zero() {
         let mean: f64 = line.split('|').nth(4).unwrap().trim().parse().unwrap();
         assert!(mean < 1e-6, "sphere mean {mean} in {line}");
     }
-}
-
-#[test]
-fn reproduce_baselines_sets_our_table_beside_the_papers() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("rep");
-    let o = tidepath(&["reproduce", "baselines", "--runs", "2", "--out", out.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
-    let report = std::fs::read_to_string(out.join("REPORT.md")).unwrap();
-    for needle in
-        ["Table 2: small ranges", "Table 4: wide ranges", "mean paper", "mean ours", "1.750e-36", "### Claims"]
-    {
-        assert!(report.contains(needle), "REPORT.md lacks {needle}");
-    }
-    assert!(out.join("table2-small/convergence.svg").is_file());
-    assert!(out.join("table4-wide/results.json").is_file());
 }

@@ -18,7 +18,7 @@ use tidepath::rng::run_rng;
 use tidepath::termination::{check_count, check_wall_time, StopReason, Termination};
 use tidepath_io::scenario::{PlanRequest, Scenario};
 
-/// Budget overrides shared by every run of an experiment.
+/// What every run of an experiment is given: budget overrides and the smoother.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct RunBudget {
     pub iterations: Option<u64>,
@@ -32,6 +32,66 @@ pub struct RunBudget {
     pub population: Option<usize>,
     /// Wall-time safety net (s); runs stopped by it are marked `wall_time`.
     pub time_limit_s: Option<f64>,
+    /// The smoother asked for (`compare --smooth`); `None`: the scenario's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub smoother: Option<Smoothing>,
+}
+
+/// A smoother and its parameters, as `--smooth ID[:KEY=VALUE,...]` gives them.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Smoothing {
+    /// Smoother id; `none` turns the scenario's smoother off.
+    pub id: String,
+    /// Its parameters; `None`: the scenario's `[planner.smoother_params.ID]`, else its defaults.
+    #[serde(default)]
+    pub params: Option<toml::Table>,
+}
+
+impl RunBudget {
+    /// The budget in words, for logs (`20 iterations, time limit 5 s per run; smoother
+    /// shortcut:passes=2`).
+    pub fn describe(&self) -> String {
+        let mut parts: Vec<String> = [
+            (self.iterations, "iterations"),
+            (self.evaluations, "evaluations"),
+            (self.expansions, "expansions"),
+            (self.samples, "samples"),
+        ]
+        .iter()
+        .filter_map(|(n, unit)| n.map(|n| format!("{n} {unit}")))
+        .collect();
+        if let Some(t) = self.target_cost {
+            parts.push(format!("stop at cost {t}"));
+        }
+        if let Some(p) = self.population {
+            parts.push(format!("population {p}"));
+        }
+        if let Some(t) = self.time_limit_s {
+            parts.push(format!("time limit {t} s"));
+        }
+        let limits = if parts.is_empty() {
+            "the scenario's and planners' defaults".into()
+        } else {
+            parts.join(", ") + " per run"
+        };
+        match &self.smoother {
+            Some(s) => format!("{limits}; smoother {}", s.describe()),
+            None => limits,
+        }
+    }
+}
+
+impl Smoothing {
+    /// `ID` or `ID:KEY=VALUE,...`, the flag's own syntax (keys in order).
+    pub fn describe(&self) -> String {
+        match &self.params {
+            Some(p) if !p.is_empty() => {
+                let kv: Vec<String> = p.iter().map(|(k, v)| format!("{k}={v}")).collect();
+                format!("{}:{}", self.id, kv.join(","))
+            }
+            _ => self.id.clone(),
+        }
+    }
 }
 
 /// Everything `results.json` holds.
@@ -59,6 +119,13 @@ pub struct Comparison {
     /// Runs that finished, of `problems x planners x runs`.
     #[serde(default)]
     pub finished_runs: usize,
+    /// The planner asked for as the reference, also when it found no feasible plan.
+    #[serde(default)]
+    pub reference_planner: Option<String>,
+    /// The smoother every compared run's path went through (`--smooth`, else the scenario's);
+    /// `None`: no smoothing.
+    #[serde(default)]
+    pub smoother: Option<Smoothing>,
 }
 
 fn finished() -> bool {
@@ -106,7 +173,9 @@ pub fn run_reference(
 ) -> Result<Option<Reference>> {
     let mut req = request(budget, planner, seed);
     req.stop = stop;
-    // The reference runs with its own defaults, not the compared planners' budget.
+    // The reference runs with its own defaults, not the compared planners' budget or smoother.
+    req.smoother = None;
+    req.smoother_params = None;
     req.iterations = None;
     req.evaluations = None;
     req.expansions = None;
@@ -221,19 +290,37 @@ pub fn compare_scenario(
     let stop = control.stop.cloned();
     let records = execute(&all, control, |t| scenario_run(scenario, budget, t, stop.clone()))?;
     let mut c = finish("scenario", problems, planners, runs, master_seed, budget, records, start);
+    c.smoother = effective_smoother(scenario, budget);
+    c.reference_planner = reference.map(str::to_string);
     if let (Some(id), true) = (reference, c.complete) {
         c.reference = run_reference(scenario, id, master_seed, budget, stop)?;
         if let Some(r) = &c.reference {
+            // Over feasible runs only: an infeasible path's cost is mostly penalty.
             for row in &mut c.rows {
-                row.gap_percent = Some(gap_percent(row.mean, r.cost));
-                row.best_gap_percent = Some(gap_percent(row.best, r.cost));
+                row.gap_percent = row.feasible_mean.map(|m| gap_percent(m, r.cost));
+                row.best_gap_percent = row.feasible_best.map(|b| gap_percent(b, r.cost));
             }
         }
     }
     Ok(c)
 }
 
-fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
+/// The smoother the compared runs use: the one asked for, else the scenario's (with its
+/// parameters); `None` for none.
+fn effective_smoother(scenario: &Scenario, budget: &RunBudget) -> Option<Smoothing> {
+    let s = match &budget.smoother {
+        Some(s) => s.clone(),
+        None => {
+            let id = scenario.planner.smoother.clone()?;
+            Smoothing { params: scenario.planner.smoother_params.get(&id).cloned(), id }
+        }
+    };
+    (s.id != "none").then_some(s)
+}
+
+/// The request of one compared run (`planner` empty: the scenario's): the budget and smoother
+/// of every run; commands check it for each planner before any run starts.
+pub fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
     PlanRequest {
         planner: (!planner.is_empty()).then(|| planner.to_string()),
         seed,
@@ -246,6 +333,8 @@ fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
         population: budget.population,
         time_limit_s: budget.time_limit_s,
         parallel: false,
+        smoother: budget.smoother.as_ref().map(|s| s.id.clone()),
+        smoother_params: budget.smoother.as_ref().and_then(|s| s.params.clone()),
         ..PlanRequest::default()
     }
 }
@@ -389,5 +478,22 @@ fn finish(
         reference: None,
         complete,
         finished_runs: records_len,
+        reference_planner: None,
+        smoother: None,
     }
+}
+
+/// A finished comparison of `records` (tests build tables from hand-made runs).
+#[cfg(test)]
+pub(crate) fn from_records(
+    kind: &str,
+    problems: &[&str],
+    planners: &[&str],
+    runs: u64,
+    records: Vec<RunRecord>,
+) -> Comparison {
+    let planners: Vec<String> = planners.iter().map(|p| p.to_string()).collect();
+    let problems = problems.iter().map(|p| p.to_string()).collect();
+    let records = records.into_iter().map(Some).collect();
+    finish(kind, problems, &planners, runs, 0, &RunBudget::default(), records, Instant::now())
 }

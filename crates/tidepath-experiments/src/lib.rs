@@ -4,6 +4,7 @@
 //! tasks for a scenario or for benchmark functions, `table` computes the per-planner rows the
 //! papers report, `output` writes the files, `reproduce` sets our numbers beside a paper's.
 
+pub mod columns;
 pub mod compare;
 pub mod ompl_log;
 pub mod output;

@@ -96,13 +96,25 @@ pub fn table_files(c: &Comparison) -> Result<Vec<(String, String)>> {
     Ok(TABLE_FILES.iter().zip(texts).map(|(n, t)| (n.to_string(), t)).collect())
 }
 
-/// The Markdown table, headed by a note when the experiment is incomplete.
+/// The Markdown table with everything needed to read it, as `compare` and `bench functions`
+/// print it: a note when the experiment is incomplete, the reference of the gap column, the
+/// smoother, the table, and the legend.
 pub fn table_md(c: &Comparison) -> String {
-    let table = super::table::markdown(&c.rows, c.is_functions());
-    match c.incomplete_note() {
-        Some(note) => format!("> **{note}**\n\n{table}"),
-        None => table,
+    use super::table::{legend, markdown, reference_line};
+    let mut out = String::new();
+    if let Some(note) = c.incomplete_note() {
+        out.push_str(&format!("> **{note}**\n\n"));
     }
+    if let Some(line) = reference_line(c) {
+        out.push_str(&format!("{line}\n\n"));
+    }
+    if let Some(s) = &c.smoother {
+        out.push_str(&format!("Smoother: every compared run's path went through {}.\n\n", s.describe()));
+    }
+    out.push_str(&markdown(c));
+    out.push('\n');
+    out.push_str(&legend(c));
+    out
 }
 
 /// Declares every file of a results folder `dir` in `out`, so that a bad target is refused
@@ -164,12 +176,12 @@ pub fn ompl_log_text(c: &Comparison) -> String {
         std::fs::read_to_string("/etc/hostname").map(|h| h.trim().to_string()).unwrap_or_else(|_| "unknown".into());
     let now = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
     let setup = format!(
-        "tidepath {} compare; planners {}; {} runs per planner; master seed {}; budget {:?}",
+        "tidepath {} compare; planners {}; {} runs per planner; master seed {}; budget: {}",
         c.tidepath_version,
         c.planners.join(","),
         c.runs,
         c.master_seed,
-        c.budget
+        c.budget.describe()
     );
     let info = OmplLogInfo {
         experiment: &problem,
@@ -184,4 +196,27 @@ pub fn ompl_log_text(c: &Comparison) -> String {
     let planners: Vec<(&str, Vec<&super::RunRecord>)> =
         c.planners.iter().map(|p| (p.as_str(), c.records_of(&problem, p).collect())).collect();
     write_ompl_log(&info, &planners)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compare::{from_records, RunBudget, Smoothing};
+
+    /// The OMPL log's setup states the budget in words, not as a Rust debug print.
+    #[test]
+    fn the_ompl_log_states_the_budget_readably() {
+        let mut c = from_records("scenario", &["bay"], &["pso"], 1, Vec::new());
+        c.budget = RunBudget {
+            iterations: Some(20),
+            time_limit_s: Some(5.0),
+            smoother: Some(Smoothing { id: "shortcut".into(), params: Some(toml::toml! { passes = 2 }) }),
+            ..RunBudget::default()
+        };
+        let log = ompl_log_text(&c);
+        assert!(log.contains("budget: 20 iterations, time limit 5 s per run; smoother shortcut:passes=2\n"), "{log}");
+        assert!(!log.contains("RunBudget") && !log.contains("Some("), "{log}");
+        c.budget = RunBudget::default();
+        assert!(ompl_log_text(&c).contains("budget: the scenario's and planners' defaults\n"));
+    }
 }

@@ -6,7 +6,6 @@ use tidepath::Error;
 use tidepath_experiments::compare::{compare_functions, FunctionProblem, RunBudget};
 use tidepath_experiments::output;
 use tidepath_experiments::runner::RunControl;
-use tidepath_experiments::table::markdown;
 use tidepath_io::Outputs;
 
 use crate::progress::RunsBar;
@@ -62,11 +61,14 @@ pub struct FunctionsArgs {
     /// Runs per pair.
     #[arg(long, default_value_t = 30)]
     pub runs: u64,
+    /// Parallel runs (default: all cores). Results do not depend on it.
     #[arg(long)]
     pub jobs: Option<usize>,
+    /// Master seed; each run's seed is derived from it (printed per run in runs.csv), so the
+    /// same seed repeats every run bit for bit.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Write results.json, runs.csv, convergence.svg and boxplot.svg here.
+    /// Write results.json, runs.csv, table.md, convergence.svg and boxplot.svg here.
     #[arg(long)]
     pub out: Option<PathBuf>,
 }
@@ -158,10 +160,7 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
         "{} runs per pair, {} evaluations each, master seed {}, {:.1} s\n",
         args.runs, args.evaluations, args.seed, c.total_wall_s
     );
-    if let Some(note) = c.incomplete_note() {
-        println!("{note}\n");
-    }
-    print!("{}", markdown(&c.rows, true));
-    println!("\nMarks: Wilcoxon rank-sum against {} per function (two-sided, alpha 0.05).", args.algos[0]);
+    // The same text as table.md: the incomplete note, the table and its legend.
+    print!("{}", output::table_md(&c));
     Ok(if c.complete { Outcome::Success } else { Outcome::Interrupted })
 }

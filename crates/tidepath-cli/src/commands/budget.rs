@@ -32,7 +32,8 @@ pub struct BudgetArgs {
 }
 
 impl BudgetArgs {
-    /// These limits as an experiment's budget, with `time_limit_s`.
+    /// These limits as an experiment's budget, with `time_limit_s` (no smoother: `--smooth` is
+    /// its own flag).
     pub fn budget(&self, time_limit_s: Option<f64>) -> tidepath_experiments::compare::RunBudget {
         tidepath_experiments::compare::RunBudget {
             iterations: self.iterations,
@@ -42,7 +43,24 @@ impl BudgetArgs {
             target_cost: self.target_cost,
             population: self.population,
             time_limit_s,
+            smoother: None,
         }
+    }
+}
+
+/// `--smooth`, shared by `plan` and `compare` so that it reads and parses the same in both.
+#[derive(Args)]
+pub struct SmoothArgs {
+    /// Smooth every planned path: a smoother id with optional parameters, `ID[:KEY=VALUE,...]`
+    /// (e.g. `shortcut:passes=3`), or `none` to override the scenario's smoother.
+    #[arg(long)]
+    pub smooth: Option<String>,
+}
+
+impl SmoothArgs {
+    /// The smoother id and its parameters, when `--smooth` was given.
+    pub fn parsed(&self) -> Result<Option<(String, Option<toml::Table>)>, tidepath::Error> {
+        self.smooth.as_deref().map(parse_smooth).transpose()
     }
 }
 

@@ -2,12 +2,10 @@ use std::path::PathBuf;
 
 use clap::Args;
 use tidepath::Error;
-use tidepath_experiments::compare::{compare_scenario, default_reference, RunBudget};
+use tidepath_experiments::compare::{compare_scenario, default_reference, request, RunBudget, Smoothing};
 use tidepath_experiments::output;
 use tidepath_experiments::runner::RunControl;
-use tidepath_experiments::table::markdown;
 use tidepath_io::scenario;
-use tidepath_io::scenario::PlanRequest;
 use tidepath_io::Outputs;
 
 use crate::progress::RunsBar;
@@ -25,6 +23,8 @@ pub struct CompareArgs {
     pub runs: u64,
     #[command(flatten)]
     pub run: super::budget::BudgetArgs,
+    #[command(flatten)]
+    pub smoothing: super::budget::SmoothArgs,
     /// Wall-time limit per run in seconds (a safety net: runs it stops depend on the machine).
     #[arg(long)]
     pub time_limit: Option<f64>,
@@ -44,7 +44,11 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
     let jobs = crate::jobs(args.run.jobs)?;
     tidepath_experiments::compare::check_runs(args.runs)?;
-    let budget = args.run.budget(args.time_limit);
+    let mut budget = args.run.budget(args.time_limit);
+    budget.smoother = args.smoothing.parsed()?.map(|(id, params)| Smoothing { id, params });
+    if let Some(id) = budget.smoother.as_ref().map(|s| s.id.as_str()).filter(|id| *id != "none") {
+        tidepath::smoothing::registry().get(id).map_err(|e| e.for_field("--smooth"))?;
+    }
     let reference = match args.reference.as_deref() {
         Some("none") => None,
         Some(id) => Some(id.to_string()),
@@ -53,11 +57,11 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     // Every planner, the reference and every output target are checked before the first run.
     for p in &args.planners {
         tidepath::planner::registry().get(p).map_err(|e| e.for_field("--planners"))?;
-        scenario.check_request(&request(&budget, p))?;
+        scenario.check_request(&request(&budget, p, args.run.seed))?;
     }
     if let Some(id) = &reference {
         let r = RunBudget { time_limit_s: budget.time_limit_s, ..RunBudget::default() };
-        scenario.check_request(&request(&r, id)).map_err(|e| e.for_field("--reference"))?;
+        scenario.check_request(&request(&r, id, args.run.seed)).map_err(|e| e.for_field("--reference"))?;
     }
     let figures = tidepath_plot::ExperimentFigures;
     let mut outputs = Outputs::new();
@@ -86,43 +90,14 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
         "{} — {} runs per planner, master seed {}, {:.1} s\n",
         scenario.name, args.runs, args.run.seed, c.total_wall_s
     );
-    match &c.reference {
-        Some(r) => println!(
-            "Reference: {} ({}), cost {}; gap % = 100 (cost - reference) / reference.\n",
-            r.planner,
-            r.status,
-            tidepath_experiments::table::num(r.cost)
-        ),
-        None if reference.is_some() => {
-            println!("Reference: {} found no feasible plan; no gap column.\n", reference.unwrap_or_default())
-        }
-        None => {}
-    }
-    if let Some(note) = c.incomplete_note() {
-        println!("{note}\n");
-    }
-    print!("{}", markdown(&c.rows, false));
-    println!("\nMarks: Wilcoxon rank-sum against {} (two-sided, alpha 0.05): + {} significantly better, ≈ no significant difference, - significantly worse.", args.planners[0], args.planners[0]);
+    // The same text as table.md: the incomplete note, the reference, the smoother, the table
+    // and its legend.
+    print!("{}", output::table_md(&c));
     if let Some(dir) = &args.out {
         println!(
-            "Wrote {}/{{results.json, runs.csv, table.md, convergence.svg, boxplot.svg, paths.svg}}",
+            "\nWrote {}/{{results.json, runs.csv, table.md, convergence.svg, boxplot.svg, paths.svg}}",
             dir.display()
         );
     }
     Ok(if c.complete { Outcome::Success } else { Outcome::Interrupted })
-}
-
-/// The request of one compared run, for checking it before any run starts.
-fn request(budget: &RunBudget, planner: &str) -> PlanRequest {
-    PlanRequest {
-        planner: Some(planner.to_string()),
-        iterations: budget.iterations,
-        evaluations: budget.evaluations,
-        expansions: budget.expansions,
-        samples: budget.samples,
-        target_cost: budget.target_cost,
-        population: budget.population,
-        time_limit_s: budget.time_limit_s,
-        ..PlanRequest::default()
-    }
 }

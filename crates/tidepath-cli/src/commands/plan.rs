@@ -24,10 +24,8 @@ pub struct PlanArgs {
     /// the machine.
     #[arg(long)]
     pub time_limit: Option<f64>,
-    /// Smooth the plan: a smoother id with optional parameters, `ID[:KEY=VALUE,...]` (e.g.
-    /// `shortcut:passes=3`), or `none` to override the scenario's smoother.
-    #[arg(long)]
-    pub smooth: Option<String>,
+    #[command(flatten)]
+    pub smoothing: super::budget::SmoothArgs,
     /// Start from this plan JSON (a warm start): optimizers seed part of their population with
     /// its paths.
     #[arg(long)]
@@ -79,7 +77,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         }
         None => None,
     };
-    let (smoother, smoother_params) = match args.smooth.as_deref().map(super::budget::parse_smooth).transpose()? {
+    let (smoother, smoother_params) = match args.smoothing.parsed()? {
         Some((id, params)) => (Some(id), params),
         None => (None, None),
     };

@@ -78,8 +78,17 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
     let outcomes = outcomes?;
     outputs.commit()?;
     for o in &outcomes {
-        let ok = o.claims.iter().filter(|(_, v)| matches!(v, ClaimVerdict::Reproduced { .. })).count();
-        println!("{}: {} of {} claims reproduced", o.title, ok, o.claims.len());
+        let count = |f: fn(&ClaimVerdict) -> bool| o.claims.iter().filter(|(_, v)| f(v)).count();
+        let ok = count(|v| matches!(v, ClaimVerdict::Reproduced { .. }));
+        let undecidable = count(|v| matches!(v, ClaimVerdict::Undecidable { .. }));
+        let mut line = format!("{}: {} of {} claims reproduced", o.title, ok, o.claims.len());
+        if undecidable > 0 {
+            line.push_str(&format!(", {undecidable} undecidable with {} runs", o.comparison.runs));
+        }
+        if let Some(n) = o.paper.runs.filter(|n| *n > o.comparison.runs) {
+            line.push_str(&format!(" (the paper reports {n} runs)"));
+        }
+        println!("{line}");
     }
     println!("Wrote {}", args.out.join("REPORT.md").display());
     if crate::interrupted() {

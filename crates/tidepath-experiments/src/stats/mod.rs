@@ -29,6 +29,7 @@ mod exact;
 mod mark;
 mod normal;
 mod rank_sum;
+mod reach;
 mod summary;
 #[cfg(test)]
 mod tests;
@@ -36,6 +37,7 @@ mod tests;
 pub use mark::{compare_to_reference, Mark};
 pub use normal::{erfc, normal_cdf};
 pub use rank_sum::{rank_sum_test, Method, RankSumResult};
+pub use reach::{smallest_p, smallest_p_any};
 pub use summary::Summary;
 
 /// Significance level used by the papers for the '+', '≈', '-' marks.

@@ -6,6 +6,7 @@ mod exact;
 mod marks;
 mod normal;
 mod rank_sum;
+mod reach;
 mod summary;
 mod textbook;
 
