@@ -50,6 +50,7 @@ fn bay() -> Comparison {
         cost: 2.0,
         length_m: None,
         travel_time_s: None,
+        waypoints: Vec::new(),
     });
     for row in &mut c.rows {
         row.gap_percent = row.feasible_mean.map(|m| gap_percent(m, 2.0));
