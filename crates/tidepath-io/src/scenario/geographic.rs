@@ -198,7 +198,7 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
         }
     }
     if let TerrainSpec::File { path, variable, positive, decimate, resolution } = &spec.world.terrain {
-        let file = data_file(path, source, "world.terrain.path")?;
+        let file = data_file(path, source, "world.terrain.path", warnings)?;
         let positive = match positive.as_deref() {
             None => None,
             Some("up") => Some(Positive::Up),
@@ -268,7 +268,7 @@ fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
 }
 
 /// `path` relative to the scenario's folder, or a built-in data file for built-in scenarios.
-fn data_file(path: &str, source: &str, field: &str) -> Result<DataFile> {
+fn data_file(path: &str, source: &str, field: &str, warnings: &mut Vec<String>) -> Result<DataFile> {
     if let Some(_name) = source.strip_prefix("builtin:") {
         return EMBEDDED
             .iter()
@@ -286,6 +286,10 @@ fn data_file(path: &str, source: &str, field: &str) -> Result<DataFile> {
     // where its data file is not next to it: the built-in copy is used.
     if !full.exists() {
         if let Some((name, bytes)) = EMBEDDED.iter().find(|(n, _)| *n == path) {
+            warnings.push(format!(
+                "{field}: '{}' does not exist; using tidepath's built-in copy of {name} (put your own file there to use it)",
+                full.display()
+            ));
             return Ok(DataFile::Embedded { name, bytes });
         }
     }
@@ -307,7 +311,7 @@ fn load_currents(
     warnings: &mut Vec<String>,
 ) -> Result<DateTime<Utc>> {
     let CurrentSpec::File { path, u, v, depth, resolution } = spec.world.current.clone() else { unreachable!() };
-    let file = data_file(&path, source, "world.current.path")?;
+    let file = data_file(&path, source, "world.current.path", warnings)?;
     if Format::of(&file, "world.current.path")? != Format::NetCdf {
         return Err(Error::input(
             "world.current.path",
