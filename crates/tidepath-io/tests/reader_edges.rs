@@ -127,3 +127,32 @@ fn an_empty_file_and_a_box_around_a_pole_are_refused_saying_so() {
     let e = tidepath_io::scenario::Scenario::from_toml(&text, "t.toml").map(|_| ()).unwrap_err().to_string();
     assert!(e.starts_with("world.bounds:") && e.contains("North Pole") && !e.contains('\n'), "{e}");
 }
+
+/// A global grid holding both -180 and +180 (the same meridian twice): a box across the
+/// antimeridian reads it, one column per longitude, and the values across the seam are the
+/// file's. The field is periodic in longitude, f = -100 + 10 cos(lon) - lat.
+#[test]
+fn a_global_grid_with_both_180_columns_reads_across_the_antimeridian() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("global.asc");
+    let f = |lon: f64, lat: f64| -100.0 + 10.0 * lon.to_radians().cos() - lat;
+    // Cell centres at -180, -179, ..., 180 (361 columns) and 3 N .. 3 S.
+    let mut text = String::from("ncols 361\nnrows 7\nxllcorner -180.5\nyllcorner -3.5\ncellsize 1\n");
+    for r in 0..7 {
+        let lat = 3.0 - r as f64;
+        let row: Vec<String> = (0..361).map(|c| format!("{:.6}", f(-180.0 + c as f64, lat))).collect();
+        text.push_str(&row.join(" "));
+        text.push('\n');
+    }
+    std::fs::write(&path, text).unwrap();
+    let b = GeoBox::new(178.6, -1.2, -178.7, 1.3, "box").unwrap();
+    let g = esri_ascii::read(&DataFile::Path(path), Some(&b), 1).unwrap();
+    // 178 .. 182 (= 178 W): one node beyond each edge, the seam's meridian once.
+    let lons: Vec<f64> = g.lon.iter().map(|l| (l * 1e6).round() / 1e6).collect();
+    assert_eq!(lons, vec![178.0, 179.0, 180.0, 181.0, 182.0], "{:?}", g.lon);
+    for (lon, lat) in [(179.5, 0.5), (180.25, -1.0), (180.9, 1.2)] {
+        let got = g.sample(lon, lat).unwrap();
+        // Bilinear on 1-degree cells of a cosine: within 10 (1 - cos 0.5 deg) of f.
+        assert!((got - f(lon, lat)).abs() < 0.01, "({lon}, {lat}): {got} vs {}", f(lon, lat));
+    }
+}
