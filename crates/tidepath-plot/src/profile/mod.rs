@@ -187,6 +187,8 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
     let (legend_area, chart_area) = body.split_vertically(legend_h);
     style::draw_legend(&legend_area.margin(0, 0, 70, 0), &legend)?;
 
+    // A little room beyond both ends, so the start and goal marks are not cut by the frame.
+    let x_pad = 0.015 * x_max;
     let ticks_x = style::tick_formatter(0.0..x_max, 8);
     let ticks_y = style::tick_formatter(lo..hi, 7);
     let y_label_w = style::y_label_area(lo..hi, 7, &ticks_y);
@@ -195,7 +197,7 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
         .margin_top(6)
         .x_label_area_size(46)
         .y_label_area_size(y_label_w)
-        .build_cartesian_2d(0.0..x_max, lo..hi)
+        .build_cartesian_2d(-x_pad..x_max + x_pad, lo..hi)
         .map_err(plot_err)?;
     chart
         .configure_mesh()
