@@ -545,3 +545,22 @@ fn rasters_and_references_keep_the_time_limit() {
     assert!(matches!(r.code, Some(0) | Some(1)), "{}", r.stderr);
     assert!(r.took < Duration::from_secs(5), "{:?}", r.took);
 }
+
+/// A GeoTIFF whose no-data text tag declares 2 GB: one error line, not the `tiff` crate's
+/// stray debug print beside it.
+#[test]
+fn a_geotiff_text_tag_longer_than_its_file_is_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let fixture = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tidepath-io/tests/data/geo/bathy_area.tif");
+    let mut b = std::fs::read(fixture).unwrap();
+    // Classic little-endian TIFF: the first IFD's entries are (tag, type, count, value).
+    assert_eq!(&b[..4], b"II*\0");
+    let ifd = u32::from_le_bytes(b[4..8].try_into().unwrap()) as usize;
+    let n = u16::from_le_bytes(b[ifd..ifd + 2].try_into().unwrap()) as usize;
+    let entry = (0..n).map(|k| ifd + 2 + 12 * k).find(|&e| u16::from_le_bytes([b[e], b[e + 1]]) == 42113).unwrap();
+    b[entry + 4..entry + 8].copy_from_slice(&0x7fff_ffffu32.to_le_bytes());
+    std::fs::write(d.join("nodata.tif"), b).unwrap();
+    std::fs::write(d.join("s.toml"), geo_scenario(Some("nodata.tif"), None)).unwrap();
+    refused(&run(d, &["plan", "s.toml"]), &["nodata.tif", "text tag 42113 declares 2147483647 bytes"]);
+}

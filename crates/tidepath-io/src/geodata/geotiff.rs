@@ -49,11 +49,38 @@ fn tiff_err(what: &str) -> impl Fn(tiff::TiffError) -> Error + '_ {
     move |e| Error::input(what, format!("not a readable GeoTIFF: {e}"))
 }
 
+/// Refuses a text (ASCII) tag read here (the no-data value) declaring more bytes than the file
+/// holds, before the `tiff`
+/// crate reads it: tiff 0.11.3 reports that case through a stray `dbg!`, an extra line on
+/// stderr, where tidepath promises one.
+fn refuse_oversized_text_tags<R: Read + Seek>(dec: &mut Decoder<R>, len: u64, what: &str) -> Result<()> {
+    let Some(ptr) = dec.ifd_pointer() else { return Ok(()) };
+    let dir = dec.read_directory(ptr).map_err(tiff_err(what))?;
+    for (tag, e) in dir.iter() {
+        // Only the text tags this reader asks for: an unused damaged tag does not stop a read.
+        if tag == Tag::GdalNodata && e.field_type() == tiff::tags::Type::ASCII && e.count() > len {
+            return Err(Error::input(
+                what,
+                format!(
+                    "not a readable GeoTIFF: text tag {} declares {} bytes, more than the file's {len}",
+                    tag.to_u16(),
+                    e.count()
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// [`read`] from any seekable reader; `what` names the source in errors.
-pub fn read_from<R: Read + Seek>(r: R, what: &str, subset: Option<&GeoBox>, decimate: usize) -> Result<GeoGrid> {
+pub fn read_from<R: Read + Seek>(mut r: R, what: &str, subset: Option<&GeoBox>, decimate: usize) -> Result<GeoGrid> {
     let err = tiff_err(what);
     let decimate = decimate.max(1);
+    let io = |e: std::io::Error| Error::input(what, format!("not a readable GeoTIFF: {e}"));
+    let len = r.seek(std::io::SeekFrom::End(0)).map_err(io)?;
+    r.seek(std::io::SeekFrom::Start(0)).map_err(io)?;
     let mut dec = Decoder::new(r).map_err(&err)?;
+    refuse_oversized_text_tags(&mut dec, len, what)?;
     let (w, h) = dec.dimensions().map_err(&err)?;
     let (w, h) = (w as usize, h as usize);
     if w < 2 || h < 2 {
