@@ -152,30 +152,12 @@ fn xml_walk(text: &str, source: &str, mut on: impl FnMut(XmlEvent<'_>) -> Result
         })?;
         match ev {
             Event::Start(e) => {
-                let name = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
-                let attrs: Vec<(String, String)> = e
-                    .attributes()
-                    .flatten()
-                    .map(|a| {
-                        let k = String::from_utf8_lossy(a.key.local_name().as_ref()).into_owned();
-                        let v = a.unescape_value().map(|v| v.into_owned()).unwrap_or_default();
-                        (k, v)
-                    })
-                    .collect();
+                let (name, attrs) = tag_of(&e);
                 path.push(name.clone());
                 on(XmlEvent::Open { name: &name, attrs: &attrs, at })?;
             }
             Event::Empty(e) => {
-                let name = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
-                let attrs: Vec<(String, String)> = e
-                    .attributes()
-                    .flatten()
-                    .map(|a| {
-                        let k = String::from_utf8_lossy(a.key.local_name().as_ref()).into_owned();
-                        let v = a.unescape_value().map(|v| v.into_owned()).unwrap_or_default();
-                        (k, v)
-                    })
-                    .collect();
+                let (name, attrs) = tag_of(&e);
                 on(XmlEvent::Open { name: &name, attrs: &attrs, at })?;
                 on(XmlEvent::Close { name: &name })?;
             }
@@ -196,6 +178,22 @@ fn xml_walk(text: &str, source: &str, mut on: impl FnMut(XmlEvent<'_>) -> Result
         }
     }
     Ok(())
+}
+
+/// An element's local name (without its namespace prefix, so `gx:coord` is `coord`) and its
+/// attributes, unescaped; an attribute that cannot be read is left out.
+fn tag_of(e: &quick_xml::events::BytesStart<'_>) -> (String, Vec<(String, String)>) {
+    let name = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
+    let attrs = e
+        .attributes()
+        .flatten()
+        .map(|a| {
+            let k = String::from_utf8_lossy(a.key.local_name().as_ref()).into_owned();
+            let v = a.unescape_value().map(|v| v.into_owned()).unwrap_or_default();
+            (k, v)
+        })
+        .collect();
+    (name, attrs)
 }
 
 enum XmlEvent<'a> {

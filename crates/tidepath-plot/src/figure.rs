@@ -75,6 +75,16 @@ impl<'a> PlanFigure<'a> {
     }
 }
 
+impl<'a> PlanFigure<'a> {
+    /// A figure of `scenario`'s world, first mission, departure, clock and safety distance.
+    pub fn of_scenario(title: impl Into<String>, scenario: &'a tidepath_io::scenario::Scenario) -> Self {
+        let mut fig = Self::new(title, &scenario.world, scenario.start, scenario.goal, scenario.departure_time);
+        fig.epoch = scenario.epoch;
+        fig.safety_distance = scenario.vehicle.safety_distance;
+        fig
+    }
+}
+
 /// Renders the figure to SVG text.
 pub fn render_plan_figure(fig: &PlanFigure) -> Result<String> {
     let mut svg = String::new();

@@ -174,15 +174,10 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
         }
     }
     let reference_points = reference.filter(|r| r.status.is_success()).map(|r| r.missions[0].points());
-    let mut fig = PlanFigure::new(
+    let mut fig = PlanFigure::of_scenario(
         format!("{} — {}, seed {}: cost {cost}, {}", scenario.name, report.planner, report.seed, report.status),
-        &scenario.world,
-        scenario.start,
-        scenario.goal,
-        scenario.departure_time,
+        scenario,
     );
-    fig.epoch = scenario.epoch;
-    fig.safety_distance = scenario.vehicle.safety_distance;
     fig.focus = report.missions.iter().filter_map(|m| m.focus.clone()).collect();
     fig.paths = owned
         .iter()

@@ -76,15 +76,8 @@ impl FigureRenderer for ExperimentFigures {
                 .as_ref()
                 .map(|r| r.waypoints.iter().map(|p| Vec3::from_array(*p)).collect())
                 .unwrap_or_default();
-            let mut fig = PlanFigure::new(
-                format!("{} — best path of each planner over {} runs", s.name, c.runs),
-                &s.world,
-                s.start,
-                s.goal,
-                s.departure_time,
-            );
-            fig.epoch = s.epoch;
-            fig.safety_distance = s.vehicle.safety_distance;
+            let mut fig =
+                PlanFigure::of_scenario(format!("{} — best path of each planner over {} runs", s.name, c.runs), s);
             fig.paths = best
                 .iter()
                 .map(|(l, pts, judged)| match judged {
