@@ -21,8 +21,9 @@ const CELLS_LONG_SIDE: f64 = 256.0;
 pub enum Reachability {
     /// No path exists: `reason` says why; `at` is the bottleneck, when one place decides it.
     Unreachable { reason: String, at: Option<Vec3> },
-    /// The optimistic raster connects start and goal. `bottleneck` is where a planner that
-    /// finds no route should look first: on the connection with the most water *surely* there
+    /// The optimistic raster connects start and goal. `bottleneck` is the deepest connection's
+    /// shallowest place from [`check`]; from [`explain`], where a planner that finds no route
+    /// should look first: on the connection with the most water *surely* there
     /// (each cell's shallowest point, none where an obstacle may reach in), the cell where that
     /// runs short of what the vehicle needs (a passage narrower than a cell may exist there);
     /// if none runs short, the shallowest place of the deepest connection (`None` when no
@@ -52,7 +53,18 @@ pub struct Bottleneck {
 /// connection pinches. Polls `termination` (the run's clock): when it fires, nothing is
 /// proved and the answer is [`Reachability::Undecided`].
 pub fn check(problem: &Problem<'_>, i: usize, termination: &Termination) -> Reachability {
-    check_inner(problem, i, termination).unwrap_or(Reachability::Undecided)
+    check_inner(problem, i, termination, false).unwrap_or(Reachability::Undecided)
+}
+
+/// For a mission whose planner found no route: where to look, the [`Reachability::Connected`]
+/// bottleneck with its pinch (a second raster pass, made only on failure). `None` when the
+/// goal is not connected, no seabed or obstacle limits the connection, or `termination`
+/// stops it.
+pub fn explain(problem: &Problem<'_>, i: usize, termination: &Termination) -> Option<Bottleneck> {
+    match check_inner(problem, i, termination, true)? {
+        Reachability::Connected { bottleneck } => bottleneck,
+        _ => None,
+    }
 }
 
 /// `Some(reason)` when mission `i` of `problem` provably has no path.
@@ -63,7 +75,9 @@ pub fn unreachable(problem: &Problem<'_>, i: usize, termination: &Termination) -
     }
 }
 
-fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination) -> Option<Reachability> {
+/// The check; with `pinch`, a connected goal's bottleneck is where the water surely there
+/// runs short (see [`Reachability::Connected`]), else the deepest connection's shallowest place.
+fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination, pinch: bool) -> Option<Reachability> {
     let world = problem.world;
     let m = &problem.missions[i];
     let v = &m.vehicle;
@@ -170,6 +184,10 @@ fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination) -> Op
             ),
             at: Some(bottleneck_at(bn.cell, false).at),
         });
+    }
+    if !pinch {
+        let bottleneck = bn.value.is_finite().then(|| bottleneck_at(bn.cell, false));
+        return Some(Reachability::Connected { bottleneck });
     }
     // Connected. Where would a conservative search get stuck? Rank the same connections by
     // the water they surely have (a cell's shallowest point, none where an obstacle may reach

@@ -169,16 +169,10 @@ pub fn solve(
             refused[i] = Some((Status::InvalidGoal, reason, focus(m.goal, "invalid goal")));
         }
     }
-    // Where each plannable mission's optimistic connection pinches, for a failure's reason.
-    let mut bottlenecks: Vec<Option<Bottleneck>> = vec![None; n];
     for (i, r) in refused.iter_mut().enumerate() {
         if r.is_none() {
-            match reachability::check(problem, i, termination) {
-                Reachability::Unreachable { reason, at } => {
-                    *r = Some((Status::Unreachable, reason, at.and_then(|a| focus(a, "bottleneck"))));
-                }
-                Reachability::Connected { bottleneck } => bottlenecks[i] = bottleneck,
-                Reachability::Undecided => {}
+            if let Reachability::Unreachable { reason, at } = reachability::check(problem, i, termination) {
+                *r = Some((Status::Unreachable, reason, at.and_then(|a| focus(a, "bottleneck"))));
             }
         }
     }
@@ -269,7 +263,9 @@ pub fn solve(
             // No route found by a search that is not a proof: say what was searched, then
             // where the optimistic check connects start and goal (the place to look).
             if no_route.is_some() || m.waypoints.len() < 2 {
-                let (text, at) = not_proved(problem, bottlenecks[i].as_ref(), no_route.is_some());
+                // On the run's clock: a run out of time gets the reason without the place.
+                let bottleneck = reachability::explain(problem, i, termination);
+                let (text, at) = not_proved(problem, bottleneck.as_ref(), no_route.is_some());
                 hint = format!("; {text}");
                 m.focus = at.map(|at| Focus { at, label: "narrowest passage".into() });
             }
