@@ -135,17 +135,10 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
         description: "a Theta* or visibility reference refined by DE over free waypoints under the scenario's cost; turns back where routes must",
         citation: "tidepath",
         params: HybridParams::SPECS,
-        build: BuildPlanner::direct(
-            Capabilities {
-                dimensions: Dimensions::Both,
-                fleets: Fleets::Jointly,
-                warm_start: true,
-                counts: &[Unit::Iterations, Unit::Evaluations],
-                optimal: None,
-                randomised: true,
-            },
-            |s| Ok(Box::new(Hybrid::new(HybridParams::from_table(&s.params, &s.prefix)?)?)),
-        ),
+        // Built directly (it owns its reference search), but it takes what an optimizer takes.
+        build: BuildPlanner::direct(Capabilities::OPTIMIZER, |s| {
+            Ok(Box::new(Hybrid::new(HybridParams::from_table(&s.params, &s.prefix)?)?))
+        }),
     },
 ];
 
