@@ -216,6 +216,7 @@ fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
             max_pitch: std::f64::consts::FRAC_PI_2,
             depth_min: 0.0,
             depth_max: 500.0,
+            turn_radius: None,
         };
         let n = rng.random_range(2..5);
         let points: Vec<Vec3> = (0..n)

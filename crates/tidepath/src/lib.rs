@@ -15,6 +15,7 @@ pub mod encoding;
 pub mod error;
 pub mod geo;
 pub mod geom;
+pub mod kinematics;
 pub mod mission;
 pub mod optim;
 pub mod params;

@@ -14,6 +14,11 @@ pub struct Vehicle {
     pub depth_max: f64,
     /// Minimum distance to keep from the seabed (vertically) and from obstacles (m).
     pub safety_distance: f64,
+    /// Minimum horizontal turning radius (m; wpa2017 eq. 9: r_min = V^2 / a_max). With one,
+    /// the vehicle flies each polyline with circular fillets at its waypoints
+    /// ([`crate::kinematics::fillet`]) and every check runs on that flown curve; `None` keeps
+    /// only the angle limit at waypoints.
+    pub turn_radius: Option<f64>,
 }
 
 impl Vehicle {
@@ -29,7 +34,8 @@ impl Vehicle {
 }
 
 impl Default for Vehicle {
-    /// A generic survey AUV: 1.5 m/s (about 3 kn), 60 degree turns, 30 degree pitch, 10 m safety.
+    /// A generic survey AUV: 1.5 m/s (about 3 kn), 60 degree turns, 30 degree pitch, 10 m safety,
+    /// no turning radius.
     fn default() -> Self {
         Self {
             speed: 1.5,
@@ -38,6 +44,7 @@ impl Default for Vehicle {
             depth_min: 0.0,
             depth_max: 6000.0,
             safety_distance: 10.0,
+            turn_radius: None,
         }
     }
 }

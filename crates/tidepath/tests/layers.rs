@@ -33,6 +33,7 @@ const ORDER: &[&str] = &[
     "scratch",
     "world",
     "vehicle",
+    "kinematics",
     "mission",
     "validity",
     "raster",

@@ -243,7 +243,7 @@ fn check_time(field: &str, t: f64) -> Result<()> {
 }
 
 fn legacy_warnings(v: &VehicleSpec, field: &str) -> Vec<String> {
-    [("speed_min", v.speed_min), ("speed_max", v.speed_max), ("turn_radius", v.turn_radius)]
+    [("speed_min", v.speed_min), ("speed_max", v.speed_max)]
         .into_iter()
         .filter(|(_, x)| x.is_some())
         .map(|(name, _)| format!("{field}.{name} is accepted for older files but no planner uses it yet; ignored"))
@@ -470,7 +470,17 @@ fn build_vehicle(s: &VehicleSpec, at: &str) -> Result<Vehicle> {
     if s.safety_distance < 0.0 {
         return Err(Error::input(format!("{at}.safety_distance"), format!("must be >= 0, got {}", s.safety_distance)));
     }
+    let turn_radius = match s.turn_radius {
+        Some(r) if !(r > 0.0 && r <= MAX_TURN_RADIUS_M) => {
+            return Err(Error::input(
+                format!("{at}.turn_radius"),
+                format!("must be in (0, {MAX_TURN_RADIUS_M}] m, got {r:?}"),
+            ))
+        }
+        r => r,
+    };
     Ok(Vehicle {
+        turn_radius,
         speed: s.speed,
         max_turn: s.max_turn_deg.to_radians(),
         max_pitch: s.max_pitch_deg.to_radians(),
@@ -479,6 +489,10 @@ fn build_vehicle(s: &VehicleSpec, at: &str) -> Result<Vehicle> {
         safety_distance: s.safety_distance,
     })
 }
+
+/// The largest turning radius a vehicle may declare (m): beyond it no waypoint turn fits in a
+/// domain the readers accept, and the value is a typo.
+pub const MAX_TURN_RADIUS_M: f64 = 1e6;
 
 /// The current step may be no finer than this fraction of the domain's horizontal diagonal:
 /// 100,000 pieces across the domain, so one evaluation stays bounded.
@@ -501,8 +515,23 @@ fn build_settings(spec: &ModelSpec, world: &World) -> Result<ModelSettings> {
         // 100 pieces across the domain: fine enough for vortices the size of a tenth of it.
         None => diag / 100.0,
     };
-    Ok(ModelSettings { travel: spec.travel_time, current_step })
+    let arc_tolerance = match spec.arc_tolerance {
+        Some(t) if !(t >= MIN_ARC_TOLERANCE_M && t <= MAX_ARC_TOLERANCE_M) => {
+            return Err(Error::input(
+                "model.arc_tolerance",
+                format!("must be in [{MIN_ARC_TOLERANCE_M}, {MAX_ARC_TOLERANCE_M}] m, got {t:?}"),
+            ))
+        }
+        Some(t) => t,
+        None => tidepath::validity::ARC_TOLERANCE,
+    };
+    Ok(ModelSettings { travel: spec.travel_time, current_step, arc_tolerance })
 }
+
+/// The arc tolerance's range (m): a millimetre keeps a turn's chords countable (at most 10^5
+/// per turn), ten metres is already coarser than a safety distance should be.
+pub const MIN_ARC_TOLERANCE_M: f64 = 1e-3;
+pub const MAX_ARC_TOLERANCE_M: f64 = 10.0;
 
 /// Slowest vehicle accepted (m/s): below any marine robot's cruise speed; slower speeds make
 /// travel times overflow.

@@ -302,11 +302,12 @@ pub struct JetSpec {
 pub struct VehicleSpec {
     pub speed: f64,
     /// Accepted so files written for earlier versions still load; no planner reads them yet
-    /// (speed choice and Dubins turns come with the wpa2017 planners). Loading warns.
+    /// (speed choice comes with the wpa2017 planners). Loading warns.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub speed_min: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub speed_max: Option<f64>,
+    /// Minimum turning radius (m); none: only `max_turn_deg` limits turns.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub turn_radius: Option<f64>,
     pub max_turn_deg: f64,
@@ -371,11 +372,14 @@ pub struct ModelSpec {
     pub travel_time: tidepath::path::TravelModel,
     /// Longest sub-step (m) for integrating travel time through the current.
     pub current_step: Option<f64>,
+    /// Largest distance (m) between a flown turn and the chords it is checked on.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arc_tolerance: Option<f64>,
 }
 
 impl Default for ModelSpec {
     fn default() -> Self {
-        Self { travel_time: tidepath::path::TravelModel::Crab, current_step: None }
+        Self { travel_time: tidepath::path::TravelModel::Crab, current_step: None, arc_tolerance: None }
     }
 }
 

@@ -20,6 +20,7 @@ fn vehicle() -> Vehicle {
         depth_min: 0.0,
         depth_max: 100.0,
         safety_distance: 1.0,
+        turn_radius: None,
     }
 }
 
@@ -77,7 +78,7 @@ fn vector_sum_travel_time_follows_seed_003_eq_17() {
     let mut w = world();
     w.current = Current::Uniform(Vec3::new(0.0, 1.5, 0.0));
     let v = vehicle();
-    let s = ModelSettings { travel: TravelModel::VectorSum, current_step: 10.0 };
+    let s = ModelSettings { travel: TravelModel::VectorSum, current_step: 10.0, ..ModelSettings::default() };
     let (a, b) = (Vec3::new(0.0, 10.0, -50.0), Vec3::new(100.0, 10.0, -50.0));
     let mission = Mission::new("m", v, a, b, 0.0);
     let m = PathModel::new(&w, &mission, &s);

@@ -35,11 +35,18 @@ pub struct ModelSettings {
     /// Longest sub-step (m) over which the current is taken as constant when integrating
     /// travel time along a segment (crab model). Smaller is more accurate and slower.
     pub current_step: f64,
+    /// How far (m) the chords a flown turn is checked on may stray from the arc (their
+    /// sagitta), for vehicles with a turning radius: smaller is more accurate and slower.
+    pub arc_tolerance: f64,
 }
+
+/// Default [`ModelSettings::arc_tolerance`] (m): 5 cm, well inside any safety distance; a
+/// quarter turn at 30 m radius is then checked on 14 chords.
+pub const ARC_TOLERANCE: f64 = 0.05;
 
 impl Default for ModelSettings {
     fn default() -> Self {
-        Self { travel: TravelModel::Crab, current_step: 500.0 }
+        Self { travel: TravelModel::Crab, current_step: 500.0, arc_tolerance: ARC_TOLERANCE }
     }
 }
 
