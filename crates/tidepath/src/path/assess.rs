@@ -29,6 +29,10 @@ pub struct Assessment {
     /// Segments steeper than the vehicle's pitch limit, and the summed excess (rad).
     pub pitch_violations: u32,
     pub pitch_excess: f64,
+    /// With a turning radius: turns whose fillet does not fit in their legs, and the summed
+    /// shortfall 1 - (radius flown / the vehicle's radius), each in [0, 1].
+    pub radius_violations: u32,
+    pub radius_excess: f64,
     /// Largest heading change at a joint and largest |pitch| of a segment (rad).
     pub max_turn: f64,
     pub max_pitch: f64,
@@ -42,6 +46,7 @@ impl Assessment {
             + self.current_blocked
             + self.current_gaps
             + self.turn_violations
+            + self.radius_violations
             + self.pitch_violations
     }
 
@@ -54,26 +59,15 @@ impl PathModel<'_> {
     /// Judges `points` (start and goal included). `times` receives the arrival time at each
     /// point, on the clock every segment's motion check used.
     pub fn assess(&self, points: &[Vec3], times: &mut Vec<f64>) -> Assessment {
+        if let Some(r) = self.vehicle.turn_radius {
+            return self.assess_flown(points, times, r);
+        }
         let mut out = Assessment::default();
         let veh = self.vehicle;
         let three_d = self.world.dims == Dims::Three;
         let validator = &self.validator;
 
-        for p in points {
-            if validator.in_bounds(*p).is_err() {
-                out.bounds_violations += 1;
-            }
-        }
-        let tol = self.endpoint_tolerance();
-        // A NaN distance counts as off.
-        let off = |p: Option<&Vec3>, q: Vec3| {
-            p.is_none_or(|p| {
-                let d = p.distance(q);
-                d.is_nan() || d > tol
-            })
-        };
-        out.endpoint_violations = u32::from(off(points.first(), self.start)) + u32::from(off(points.last(), self.goal));
-
+        self.waypoint_checks(points, &mut out);
         // Angles are compared through their cosine and tangent so the common case needs no
         // inverse trigonometry; acos/atan run only for violations and once for the maxima.
         let cos_turn_limit = veh.max_turn.cos();
@@ -121,6 +115,28 @@ impl PathModel<'_> {
         out.max_pitch = max_slope.atan();
         out.travel_time = t - self.departure_time;
         out
+    }
+}
+
+impl PathModel<'_> {
+    /// The checks on waypoints alone: in the domain and depth band, first and last at the
+    /// mission's start and goal.
+    pub(super) fn waypoint_checks(&self, points: &[Vec3], out: &mut Assessment) {
+        let validator = &self.validator;
+        for p in points {
+            if validator.in_bounds(*p).is_err() {
+                out.bounds_violations += 1;
+            }
+        }
+        let tol = self.endpoint_tolerance();
+        // A NaN distance counts as off.
+        let off = |p: Option<&Vec3>, q: Vec3| {
+            p.is_none_or(|p| {
+                let d = p.distance(q);
+                d.is_nan() || d > tol
+            })
+        };
+        out.endpoint_violations = u32::from(off(points.first(), self.start)) + u32::from(off(points.last(), self.goal));
     }
 }
 

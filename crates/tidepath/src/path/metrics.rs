@@ -17,6 +17,13 @@ pub struct Metrics {
     pub min_clearance_m: Option<f64>,
     /// (segment, object) pairs closer than the safety distance.
     pub collisions: u32,
+    /// With a turning radius: the smallest radius of a turn flown (the vehicle's own when
+    /// every fillet fits; `null` when the path has no turn). Absent without a radius.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min_turn_radius_m: Option<f64>,
+    /// With a turning radius: the flown curve's largest curvature (1/m), 1 / min_turn_radius_m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_curvature_per_m: Option<f64>,
 }
 
 impl PathModel<'_> {
@@ -30,15 +37,38 @@ impl PathModel<'_> {
             max_pitch_deg: a.max_pitch.to_degrees(),
             min_clearance_m: self.min_clearance(points, &times),
             collisions: a.collisions,
+            min_turn_radius_m: self.turn_radius().and_then(|r| min_turn_radius(points, r)),
+            max_curvature_per_m: self
+                .turn_radius()
+                .map(|r| min_turn_radius(points, r).map_or(0.0, |m| if m > 0.0 { 1.0 / m } else { f64::INFINITY })),
         }
     }
 
-    /// Smallest clearance over all segments; see [`Metrics::min_clearance_m`].
+    /// Smallest clearance over all segments (over the flown curve's motions with a turning
+    /// radius); see [`Metrics::min_clearance_m`].
     pub fn min_clearance(&self, points: &[Vec3], times: &[f64]) -> Option<f64> {
         let mut best = f64::INFINITY;
+        if let Some(r) = self.turn_radius() {
+            let v = &self.validator;
+            self.walk_flown(points, r, |m, _, t0, _| best = best.min(v.motion_clearance(m.a, m.b, t0)), |_, _, _| {});
+            return best.is_finite().then_some(best);
+        }
         for (i, w) in points.windows(2).enumerate() {
             best = best.min(self.validator.motion_clearance(w[0], w[1], times[i]));
         }
         best.is_finite().then_some(best)
     }
+}
+
+/// The smallest radius flown at a turn of `points` with radius `r` (`None`: no turn).
+fn min_turn_radius(points: &[Vec3], r: f64) -> Option<f64> {
+    let mut best: Option<f64> = None;
+    crate::kinematics::fillet::for_each_piece(points, r, |p| {
+        if let crate::kinematics::FlownPiece::Arc(a) = p {
+            if a.corner.turn > 0.0 {
+                best = Some(best.map_or(a.corner.radius, |b| b.min(a.corner.radius)));
+            }
+        }
+    });
+    best
 }

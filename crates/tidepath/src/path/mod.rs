@@ -5,11 +5,14 @@
 //! reported travel time.
 
 mod assess;
+mod assess_flown;
+mod flown;
 mod metrics;
 mod violations;
 
 pub use crate::validity::{ModelSettings, TravelModel};
 pub use assess::Assessment;
+pub use flown::{Flown, FlownMotion};
 pub use metrics::Metrics;
 pub use violations::{Violation, ViolationKind};
 

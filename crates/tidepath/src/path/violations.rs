@@ -33,6 +33,16 @@ impl PathModel<'_> {
     /// Every violated constraint, in path order. Empty exactly when
     /// [`super::Assessment::feasible`] holds.
     pub fn violations(&self, points: &[Vec3]) -> Vec<Violation> {
+        let mut out = self.waypoint_violations(points);
+        match self.vehicle.turn_radius {
+            Some(r) => self.flown_violations(points, r, &mut out),
+            None => self.polyline_violations(points, &mut out),
+        }
+        out
+    }
+
+    /// Endpoint, domain and depth-band violations of the waypoints.
+    fn waypoint_violations(&self, points: &[Vec3]) -> Vec<Violation> {
         let world = self.world;
         let veh = self.vehicle;
         let validator = &self.validator;
@@ -69,7 +79,43 @@ impl PathModel<'_> {
                 Ok(()) => {}
             }
         }
-        let safety = veh.safety_distance;
+        out
+    }
+
+    /// The waypoint angle limit on the polyline's joints (the polyline's own check does it
+    /// segment by segment, in path order).
+    pub(super) fn turn_angle_violations(&self, points: &[Vec3], push: &mut impl FnMut(ViolationKind, usize, String)) {
+        let veh = self.vehicle;
+        let mut prev_h: Option<(Vec2, f64)> = None;
+        for (i, w) in points.windows(2).enumerate() {
+            let h = (w[1] - w[0]).truncate();
+            let h_len = h.length();
+            if h_len > 0.0 {
+                if let Some((ph, ph_len)) = prev_h {
+                    let c = turn_cos(ph, ph_len, h, h_len);
+                    if c < veh.max_turn.cos() {
+                        push(
+                            ViolationKind::Turn,
+                            i,
+                            format!(
+                                "waypoint {i} turn {:.1} deg exceeds the limit {:.1} deg",
+                                c.acos().to_degrees(),
+                                veh.max_turn.to_degrees()
+                            ),
+                        );
+                    }
+                }
+                prev_h = Some((h, h_len));
+            }
+        }
+    }
+
+    /// Every segment's motion issues and pitch, flying the polyline itself.
+    fn polyline_violations(&self, points: &[Vec3], out: &mut Vec<Violation>) {
+        let world = self.world;
+        let veh = self.vehicle;
+        let validator = &self.validator;
+        let mut push = |kind, index, message: String| out.push(Violation { kind, index, message });
         let three_d = world.dims == Dims::Three;
         let mut prev_h: Option<(Vec2, f64)> = None;
         let mut t = self.departure_time;
@@ -79,48 +125,8 @@ impl PathModel<'_> {
             let mut issues = Vec::new();
             let m = validator.motion_with(a, b, t, |issue| issues.push(issue));
             for issue in issues {
-                match issue {
-                    MotionIssue::Terrain => {
-                        let c = world.segment_terrain_clearance(a, b);
-                        // The ground at the worst point is at least min(z) - c: above the
-                        // sea surface, the segment crosses land.
-                        let ground = a.z.min(b.z) - c;
-                        let text = if ground > 0.0 {
-                            format!("segment {i} crosses land (ground at least {ground:.1} m above the sea surface)")
-                        } else if c < 0.0 {
-                            format!("segment {i} passes {:.2} m below the seabed (safety distance {safety} m)", -c)
-                        } else {
-                            format!("segment {i} passes {c:.2} m above the seabed (safety distance {safety} m)")
-                        };
-                        push(ViolationKind::Terrain, i, text);
-                    }
-                    MotionIssue::Obstacle(k) => {
-                        let c = obstacle_clearance(self, k, a, b, t);
-                        push(
-                            ViolationKind::Obstacle,
-                            i,
-                            format!("segment {i} passes {c:.2} m from obstacle {k} (safety distance {safety} m)"),
-                        );
-                    }
-                    MotionIssue::Current { pieces } => push(
-                        ViolationKind::Current,
-                        i,
-                        format!(
-                            "segment {i}: the current stops a {} m/s vehicle from holding the track on {pieces} piece(s)",
-                            veh.speed
-                        ),
-                    ),
-                    MotionIssue::NoCurrentData => {
-                        let at = world.current.first_gap_on(a, b).map(|p| world.place(p.x, p.y)).unwrap_or_default();
-                        push(
-                            ViolationKind::Current,
-                            i,
-                            format!(
-                                "segment {i} passes where the current forecast has no data (land or fill), first at {at}"
-                            ),
-                        )
-                    }
-                }
+                let (kind, text) = motion_issue_text(self, issue, &format!("segment {i}"), a, b, t);
+                push(kind, i, text);
             }
             t = m.arrival;
             let h = dir.truncate();
@@ -154,7 +160,52 @@ impl PathModel<'_> {
                 prev_h = Some((h, h_len));
             }
         }
-        out
+    }
+}
+
+/// The violation kind and message of one motion issue of the motion a -> b leaving at `t0`;
+/// `place` names it ("segment 3", "the turn at waypoint 4").
+pub(super) fn motion_issue_text(
+    model: &PathModel<'_>,
+    issue: MotionIssue,
+    place: &str,
+    a: Vec3,
+    b: Vec3,
+    t: f64,
+) -> (ViolationKind, String) {
+    let world = model.world;
+    let veh = model.vehicle;
+    let safety = veh.safety_distance;
+    match issue {
+        MotionIssue::Terrain => {
+            let c = world.segment_terrain_clearance(a, b);
+            // The ground at the worst point is at least min(z) - c: above the sea surface, the
+            // motion crosses land.
+            let ground = a.z.min(b.z) - c;
+            let text = if ground > 0.0 {
+                format!("{place} crosses land (ground at least {ground:.1} m above the sea surface)")
+            } else if c < 0.0 {
+                format!("{place} passes {:.2} m below the seabed (safety distance {safety} m)", -c)
+            } else {
+                format!("{place} passes {c:.2} m above the seabed (safety distance {safety} m)")
+            };
+            (ViolationKind::Terrain, text)
+        }
+        MotionIssue::Obstacle(k) => {
+            let c = obstacle_clearance(model, k, a, b, t);
+            (ViolationKind::Obstacle, format!("{place} passes {c:.2} m from obstacle {k} (safety distance {safety} m)"))
+        }
+        MotionIssue::Current { pieces } => (
+            ViolationKind::Current,
+            format!("{place}: the current stops a {} m/s vehicle from holding the track on {pieces} piece(s)", veh.speed),
+        ),
+        MotionIssue::NoCurrentData => {
+            let at = world.current.first_gap_on(a, b).map(|p| world.place(p.x, p.y)).unwrap_or_default();
+            (
+                ViolationKind::Current,
+                format!("{place} passes where the current forecast has no data (land or fill), first at {at}"),
+            )
+        }
     }
 }
 

@@ -8,7 +8,7 @@ use crate::error::Result;
 use crate::geom::Vec3;
 use crate::mission::Mission;
 use crate::optim::Progress;
-use crate::path::{Metrics, PathModel, Violation};
+use crate::path::{Flown, Metrics, PathModel, Violation};
 use crate::rng::Rng;
 use crate::smoothing::Smoother;
 use crate::termination::{StopReason, Termination};
@@ -30,8 +30,12 @@ pub struct MissionPlan {
     pub smoothed: Option<Vec<Vec3>>,
     /// Cost of `waypoints` before smoothing, when a smoother ran.
     pub raw_cost: Option<f64>,
-    /// Arrival time at each point of the final path (s on the scenario clock).
+    /// Arrival time at each point of the final path (s on the scenario clock); with a turning
+    /// radius, at an interior waypoint the time halfway round its turn.
     pub times: Vec<f64>,
+    /// With a turning radius: the curve the vehicle flies along the final path (fillets at
+    /// its waypoints), sampled where the evaluation checked it, with arrival times.
+    pub flown: Option<Flown>,
     pub cost: f64,
     pub terms: Vec<(&'static str, f64)>,
     pub feasible: bool,
@@ -73,6 +77,7 @@ impl MissionPlan {
             smoothed: None,
             raw_cost: None,
             times: Vec::new(),
+            flown: None,
             cost: f64::INFINITY,
             terms: Vec::new(),
             feasible: false,
@@ -113,6 +118,7 @@ pub fn judge(model: &PathModel<'_>, cost: &dyn crate::cost::CostModel, points: &
         smoothed: None,
         raw_cost: None,
         times,
+        flown: model.flown(points),
         cost: total,
         terms,
         feasible: violations.is_empty(),
