@@ -81,4 +81,6 @@ impl<'a> PathModel<'a> {
 }
 
 #[cfg(test)]
+mod flown_tests;
+#[cfg(test)]
 mod tests;
