@@ -16,6 +16,7 @@
 //! Headings are radians counter-clockwise from east (+x), as in OMPL's `SE2StateSpace`.
 
 pub mod dubins;
+pub mod dubins3;
 pub mod fillet;
 pub mod tangent;
 
