@@ -182,10 +182,23 @@ mod tests {
     fn quarter_turn_then_straight_by_hand() {
         // East at the origin to north at (r, r + 20): a left quarter circle (pi r / 2) and 20 m.
         let r = 8.0;
-        let d = Dubins::shortest(Pose::new(Vec3::ZERO, 0.0), Pose::new(Vec3::new(r, r + 20.0, 0.0), FRAC_PI_2), r)
-            .unwrap();
+        let d =
+            Dubins::shortest(Pose::new(Vec3::ZERO, 0.0), Pose::new(Vec3::new(r, r + 20.0, 0.0), FRAC_PI_2), r).unwrap();
         assert!((d.length() - (FRAC_PI_2 * r + 20.0)).abs() < 1e-9, "{d:?}");
         assert_eq!(d.word.turns()[0], 1);
+    }
+
+    #[test]
+    fn the_crates_documented_case() {
+        // dubins_paths' README: (0, 0, pi/4) to (100, -100, 3 pi/4) with radius 11.6 is "just
+        // over 185" long; OMPL 2.0.1's DubinsStateSpace(11.6) gives 185.0022887156118.
+        let d = Dubins::shortest(
+            Pose::new(Vec3::ZERO, PI / 4.0),
+            Pose::new(Vec3::new(100.0, -100.0, 0.0), 3.0 * PI / 4.0),
+            11.6,
+        )
+        .unwrap();
+        assert!((d.length() - 185.0022887156118).abs() < 1e-9 * 185.0, "{}", d.length());
     }
 
     #[test]
