@@ -107,3 +107,46 @@ fn the_rechecker_finds_what_it_is_shown() {
         .unwrap_err()
         .contains("arrival"));
 }
+
+/// The flown-curve re-checker is not vacuous either: it passes the evaluation's own verdict
+/// on a quarter turn, finds a moving sphere placed on the arc at the moment the vehicle is
+/// there, a turn flown under the vehicle's radius, and a wrong clock.
+#[test]
+fn the_flown_rechecker_finds_what_it_is_shown() {
+    use tidepath::geom::{Aabb, Vec3};
+    use tidepath::mission::Mission;
+    use tidepath::path::{ModelSettings, PathModel};
+    use tidepath::vehicle::Vehicle;
+    use tidepath::world::{Current, Obstacle, Shape, World};
+    let mut world = World::open(Aabb::new(Vec3::new(0.0, 0.0, -100.0), Vec3::new(300.0, 300.0, 0.0)));
+    world.current = Current::Uniform(Vec3::new(0.3, 0.1, 0.0));
+    let vehicle = Vehicle { turn_radius: Some(40.0), max_turn: std::f64::consts::PI, ..Vehicle::default() };
+    let settings = ModelSettings::default();
+    let path = [Vec3::new(10.0, 10.0, -50.0), Vec3::new(200.0, 10.0, -40.0), Vec3::new(200.0, 200.0, -40.0)];
+    let mission = Mission::new("m", vehicle.clone(), path[0], path[2], 0.0);
+    let model = PathModel::new(&world, &mission, &settings);
+    let mut times = Vec::new();
+    assert!(model.assess(&path, &mut times).feasible());
+    let n = common::flown::recheck_flown(&world, &vehicle, &settings, &path, &times, 40.0).unwrap();
+    assert!(n > 500, "{n} samples");
+    // Halfway round the turn, at the time the vehicle is there.
+    let mid = Vec3::new(
+        160.0 + 40.0 * (std::f64::consts::FRAC_PI_4).sin(),
+        50.0 - 40.0 * (std::f64::consts::FRAC_PI_4).cos(),
+        -40.0,
+    );
+    let velocity = Vec3::new(-0.5, 0.2, 0.0);
+    let mut w2 = world.clone();
+    w2.obstacles.push(Obstacle { shape: Shape::Sphere { center: mid - velocity * times[1], radius: 1.0 }, velocity });
+    let e = common::flown::recheck_flown(&w2, &vehicle, &settings, &path, &times, 40.0).unwrap_err();
+    assert!(e.contains("obstacle 0"), "{e}");
+    // A corner whose legs allow only 30 m.
+    let short = [Vec3::new(170.0, 10.0, -50.0), Vec3::new(200.0, 10.0, -40.0), Vec3::new(200.0, 200.0, -40.0)];
+    let e = common::flown::recheck_flown(&world, &vehicle, &settings, &short, &times, 40.0).unwrap_err();
+    assert!(e.contains("flown at radius 30.000 m"), "{e}");
+    let mut late = times.clone();
+    late[1] += 0.5;
+    assert!(common::flown::recheck_flown(&world, &vehicle, &settings, &path, &late, 40.0)
+        .unwrap_err()
+        .contains("halfway"));
+}

@@ -153,11 +153,18 @@ pub fn recheck_plan(s: &Scenario, r: &PlanReport) -> Result<usize, String> {
             continue;
         }
         let path = m.points();
-        samples += recheck_path(&s.world, &mission.vehicle, &s.settings, &path, &m.times)
-            .map_err(|e| format!("{} / {} seed {} mission {}: {e}", s.name, r.planner, r.seed, m.name))?;
+        let checked = match mission.vehicle.turn_radius {
+            Some(radius) => flown::recheck_flown(&s.world, &mission.vehicle, &s.settings, &path, &m.times, radius),
+            None => recheck_path(&s.world, &mission.vehicle, &s.settings, &path, &m.times),
+        };
+        samples +=
+            checked.map_err(|e| format!("{} / {} seed {} mission {}: {e}", s.name, r.planner, r.seed, m.name))?;
     }
     Ok(samples)
 }
+
+/// The re-checker for vehicles with a turning radius (the flown fillet curve).
+pub mod flown;
 
 /// A toy planner and a toy smoother in extended registries.
 #[allow(dead_code)]
