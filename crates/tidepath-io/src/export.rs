@@ -10,7 +10,15 @@
 //!   coordinate is an altitude (GeoJSON, KML, GPX `ele`) it holds the elevation z = -depth,
 //!   as RFC 7946 and KML define it;
 //! * times are seconds on the scenario clock (`time_s`), and UTC instants where the scenario
-//!   has an epoch (ISO departures or `world.epoch`).
+//!   has an epoch (ISO departures or `world.epoch`);
+//! * with a turning radius a mission has two lines, labelled: its **waypoints** (the route an
+//!   autopilot is given, and what `eval` and `plan --init` read back) and the curve the
+//!   vehicle **flies** along them (a fillet at each interior waypoint, sampled as the
+//!   evaluation checked it, with its times). GeoJSON: two features, property `kind`
+//!   `"waypoints"` and `"flown"`; GPX: a `<rte>` of the waypoints and a `<trk>` of the flown
+//!   curve, `<type>` saying which; KML: a second placemark "NAME (flown)" with
+//!   `<Data name="kind">` `flown`; CSV: a `kind` column. Without a radius the files are as
+//!   they were (one line per mission, no `kind`).
 
 use chrono::{DateTime, Utc};
 
@@ -79,12 +87,30 @@ pub struct Georef<'a> {
     pub epoch: Option<DateTime<Utc>>,
 }
 
-/// One timed point of a mission's final path.
+/// One timed point of a mission's final path or flown curve.
 struct Point {
     lon: f64,
     lat: f64,
     z: f64,
     t: f64,
+}
+
+/// The `kind` of a mission's waypoints and of its flown curve, in every format that labels
+/// them.
+pub const KIND_WAYPOINTS: &str = "waypoints";
+pub const KIND_FLOWN: &str = "flown";
+
+/// One mission's lines in longitude/latitude: its waypoints and, with a turning radius, the
+/// curve the vehicle flies along them.
+struct Track {
+    name: String,
+    waypoints: Vec<Point>,
+    flown: Option<Vec<Point>>,
+}
+
+/// Whether any mission of the plan has a flown curve: the exports then label their lines.
+fn has_flown(report: &PlanReport) -> bool {
+    report.missions.iter().any(|m| m.flown.is_some())
 }
 
 /// The plan in `format`.
@@ -107,22 +133,26 @@ fn frame<'a>(geo: Georef<'a>, what: &str) -> Result<&'a GeoFrame> {
     })
 }
 
-fn tracks(report: &PlanReport, f: &GeoFrame) -> Vec<(String, Vec<Point>)> {
+/// Timed points in longitude/latitude (a time is NaN where `times` has none).
+fn lonlat(points: &[Vec3], times: &[f64], f: &GeoFrame) -> Vec<Point> {
+    points
+        .iter()
+        .enumerate()
+        .map(|(k, p)| {
+            let (lon, lat) = f.inverse(p.x, p.y);
+            Point { lon, lat, z: p.z, t: times.get(k).copied().unwrap_or(f64::NAN) }
+        })
+        .collect()
+}
+
+fn tracks(report: &PlanReport, f: &GeoFrame) -> Vec<Track> {
     report
         .missions
         .iter()
-        .map(|m| {
-            let pts = m.points();
-            let times = &m.times;
-            let track = pts
-                .iter()
-                .enumerate()
-                .map(|(k, p): (usize, &Vec3)| {
-                    let (lon, lat) = f.inverse(p.x, p.y);
-                    Point { lon, lat, z: p.z, t: times.get(k).copied().unwrap_or(f64::NAN) }
-                })
-                .collect();
-            (m.name.clone(), track)
+        .map(|m| Track {
+            name: m.name.clone(),
+            waypoints: lonlat(&m.points(), &m.times, f),
+            flown: m.flown.as_ref().map(|c| lonlat(&c.vectors(), &c.times, f)),
         })
         .collect()
 }
@@ -161,35 +191,63 @@ fn round_to(v: f64, decimals: i32) -> f64 {
     (v * f).round() / f + 0.0
 }
 
+/// One row per point: of the waypoints, then (with a turning radius, `kind` `flown`) of the
+/// flown curve, mission by mission; the `kind` column is there only when a mission has a flown
+/// curve.
 fn csv(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     let mut w = crate::csv_table::writer();
-    let row = |w: &mut csv::Writer<Vec<u8>>, fields: &[String]| crate::csv_table::row(w, "--out", fields);
+    let row = |w: &mut csv::Writer<Vec<u8>>, fields: Vec<String>| crate::csv_table::row(w, "--out", &fields);
+    let labelled = has_flown(report);
+    // The mission's name, then its kind when lines are labelled.
+    let lead = |name: &str, kind: &str| {
+        let mut v = vec![name.to_string()];
+        if labelled {
+            v.push(kind.to_string());
+        }
+        v
+    };
     match geo.frame {
         Some(f) => {
-            row(&mut w, &["mission", "point", "lat", "lon", "depth_m", "time_s", "utc"].map(String::from))?;
-            for (name, track) in tracks(report, f) {
-                for (k, p) in track.iter().enumerate() {
-                    let fields = [
-                        name.clone(),
-                        k.to_string(),
-                        format!("{:.7}", p.lat),
-                        format!("{:.7}", p.lon),
-                        fixed(-p.z + 0.0, 2),
-                        fixed(p.t, 3),
-                        utc(geo.epoch, p.t).unwrap_or_default(),
-                    ];
-                    row(&mut w, &fields)?;
+            row(
+                &mut w,
+                [
+                    lead("mission", "kind"),
+                    ["point", "lat", "lon", "depth_m", "time_s", "utc"].map(String::from).to_vec(),
+                ]
+                .concat(),
+            )?;
+            for t in tracks(report, f) {
+                let lines = [(KIND_WAYPOINTS, Some(&t.waypoints)), (KIND_FLOWN, t.flown.as_ref())];
+                for (kind, line) in lines.into_iter().filter_map(|(k, l)| l.map(|l| (k, l))) {
+                    for (k, p) in line.iter().enumerate() {
+                        let fields = [
+                            k.to_string(),
+                            format!("{:.7}", p.lat),
+                            format!("{:.7}", p.lon),
+                            fixed(-p.z + 0.0, 2),
+                            fixed(p.t, 3),
+                            utc(geo.epoch, p.t).unwrap_or_default(),
+                        ];
+                        row(&mut w, [lead(&t.name, kind), fields.to_vec()].concat())?;
+                    }
                 }
             }
         }
         None => {
-            row(&mut w, &["mission", "point", "x_m", "y_m", "z_m", "time_s"].map(String::from))?;
+            row(
+                &mut w,
+                [lead("mission", "kind"), ["point", "x_m", "y_m", "z_m", "time_s"].map(String::from).to_vec()].concat(),
+            )?;
             for m in &report.missions {
-                for (k, p) in m.points().iter().enumerate() {
-                    let t = m.times.get(k).copied().unwrap_or(f64::NAN);
-                    let fields =
-                        [m.name.clone(), k.to_string(), fixed(p.x, 3), fixed(p.y, 3), fixed(p.z, 3), fixed(t, 3)];
-                    row(&mut w, &fields)?;
+                let waypoints = (m.points(), m.times.as_slice());
+                let flown = m.flown.as_ref().map(|c| (c.vectors(), c.times.as_slice()));
+                let lines = [(KIND_WAYPOINTS, Some(waypoints)), (KIND_FLOWN, flown)];
+                for (kind, (points, times)) in lines.into_iter().filter_map(|(k, l)| l.map(|l| (k, l))) {
+                    for (k, p) in points.iter().enumerate() {
+                        let t = times.get(k).copied().unwrap_or(f64::NAN);
+                        let fields = [k.to_string(), fixed(p.x, 3), fixed(p.y, 3), fixed(p.z, 3), fixed(t, 3)];
+                        row(&mut w, [lead(&m.name, kind), fields.to_vec()].concat())?;
+                    }
                 }
             }
         }
@@ -197,36 +255,56 @@ fn csv(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     crate::csv_table::text(w, "--out")
 }
 
+/// A mission's line as a GeoJSON feature: the line, and per point its depth, time and (with an
+/// epoch) UTC instant; `kind` labels it when the plan has flown curves.
+fn geojson_feature(
+    report: &PlanReport,
+    name: &str,
+    kind: Option<&str>,
+    line: &[Point],
+    geo: Georef<'_>,
+) -> geojson::Feature {
+    use geojson::{Feature, Geometry, GeometryValue, JsonObject, JsonValue};
+    let coords: Vec<[f64; 3]> = line.iter().map(|p| [round7(p.lon), round7(p.lat), round_to(p.z, 2)]).collect();
+    let mut props = JsonObject::new();
+    props.insert("name".into(), JsonValue::from(name));
+    if let Some(kind) = kind {
+        props.insert("kind".into(), JsonValue::from(kind));
+    }
+    props.insert("scenario".into(), JsonValue::from(report.scenario.clone()));
+    props.insert("planner".into(), JsonValue::from(report.planner.clone()));
+    props.insert("status".into(), JsonValue::from(report.status.to_string()));
+    props.insert("feasible".into(), JsonValue::from(report.feasible));
+    props.insert("depth_m".into(), JsonValue::from(line.iter().map(|p| round_to(-p.z, 2)).collect::<Vec<_>>()));
+    props.insert(
+        "time_s".into(),
+        JsonValue::from(
+            line.iter()
+                .map(|p| if p.t.is_finite() { JsonValue::from(round_to(p.t, 3)) } else { JsonValue::Null })
+                .collect::<Vec<_>>(),
+        ),
+    );
+    if geo.epoch.is_some() {
+        let times: Vec<JsonValue> =
+            line.iter().map(|p| utc(geo.epoch, p.t).map(JsonValue::from).unwrap_or(JsonValue::Null)).collect();
+        props.insert("utc".into(), JsonValue::from(times));
+    }
+    // A LineString needs two positions; a mission without a path has no geometry.
+    let geometry = (coords.len() >= 2).then(|| Geometry::new(GeometryValue::new_line_string(coords)));
+    Feature { bbox: None, geometry, id: None, properties: Some(props), foreign_members: None }
+}
+
 fn geojson(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
-    use geojson::{Feature, FeatureCollection, Geometry, GeometryValue, JsonObject, JsonValue};
+    use geojson::FeatureCollection;
     let f = frame(geo, ".geojson")?;
+    let labelled = has_flown(report);
     let mut features = Vec::new();
-    for (name, track) in tracks(report, f) {
-        let coords: Vec<[f64; 3]> = track.iter().map(|p| [round7(p.lon), round7(p.lat), round_to(p.z, 2)]).collect();
-        let mut props = JsonObject::new();
-        props.insert("name".into(), JsonValue::from(name));
-        props.insert("scenario".into(), JsonValue::from(report.scenario.clone()));
-        props.insert("planner".into(), JsonValue::from(report.planner.clone()));
-        props.insert("status".into(), JsonValue::from(report.status.to_string()));
-        props.insert("feasible".into(), JsonValue::from(report.feasible));
-        props.insert("depth_m".into(), JsonValue::from(track.iter().map(|p| round_to(-p.z, 2)).collect::<Vec<_>>()));
-        props.insert(
-            "time_s".into(),
-            JsonValue::from(
-                track
-                    .iter()
-                    .map(|p| if p.t.is_finite() { JsonValue::from(round_to(p.t, 3)) } else { JsonValue::Null })
-                    .collect::<Vec<_>>(),
-            ),
-        );
-        if geo.epoch.is_some() {
-            let times: Vec<JsonValue> =
-                track.iter().map(|p| utc(geo.epoch, p.t).map(JsonValue::from).unwrap_or(JsonValue::Null)).collect();
-            props.insert("utc".into(), JsonValue::from(times));
+    for t in tracks(report, f) {
+        let kind = labelled.then_some(KIND_WAYPOINTS);
+        features.push(geojson_feature(report, &t.name, kind, &t.waypoints, geo));
+        if let Some(flown) = &t.flown {
+            features.push(geojson_feature(report, &t.name, Some(KIND_FLOWN), flown, geo));
         }
-        // A LineString needs two positions; a mission without a path has no geometry.
-        let geometry = (coords.len() >= 2).then(|| Geometry::new(GeometryValue::new_line_string(coords)));
-        features.push(Feature { bbox: None, geometry, id: None, properties: Some(props), foreign_members: None });
     }
     let fc = FeatureCollection { bbox: None, features, foreign_members: None };
     Ok(fc.to_string())
@@ -285,10 +363,12 @@ fn xml_document(root: impl FnOnce(&mut Xml) -> Result<()>) -> Result<String> {
 /// point when the scenario has an epoch, so the globe's time slider plays it, else a
 /// `LineString`) and start and goal placemarks. Altitudes are `absolute`: below the sea
 /// surface for an AUV, which Google Earth shows once its view goes under water
-/// (docs/data-formats.md says how).
+/// (docs/data-formats.md says how). With a turning radius the route placemark is the thin line
+/// of the waypoints and a second placemark, "NAME (flown)", the thick line of the flown
+/// curve; each says its `kind` in its `ExtendedData`.
 fn kml(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     let f = frame(geo, ".kml")?;
-    let coord = |p: &Point, sep: &str| format!("{:.7}{sep}{:.7}{sep}{}", p.lon, p.lat, fixed(p.z, 2));
+    let labelled = has_flown(report);
     xml_document(|w| {
         start(
             w,
@@ -299,45 +379,37 @@ fn kml(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
         element(w, "name", &report.scenario)?;
         let desc = format!("{} plan by {}: {}: {}", report.scenario, report.planner, report.status, report.reason);
         element(w, "description", &desc)?;
-        start(w, "Style", &[("id", "route")])?;
-        start(w, "LineStyle", &[])?;
-        element(w, "color", "ff0080ff")?;
-        element(w, "width", "3")?;
-        end(w, "LineStyle")?;
-        end(w, "Style")?;
-        for (name, track) in tracks(report, f) {
-            start(w, "Placemark", &[])?;
-            element(w, "name", &name)?;
-            element(w, "styleUrl", "#route")?;
-            let times: Option<Vec<String>> = track.iter().map(|p| utc(geo.epoch, p.t)).collect();
-            match times {
-                Some(times) if !track.is_empty() => {
-                    start(w, "gx:Track", &[])?;
-                    element(w, "altitudeMode", "absolute")?;
-                    for t in &times {
-                        element(w, "when", t)?;
-                    }
-                    for p in &track {
-                        element(w, "gx:coord", &coord(p, " "))?;
-                    }
-                    end(w, "gx:Track")?;
-                }
-                _ => {
-                    start(w, "LineString", &[])?;
-                    element(w, "altitudeMode", "absolute")?;
-                    let coords: Vec<String> = track.iter().map(|p| coord(p, ",")).collect();
-                    element(w, "coordinates", &coords.join(" "))?;
-                    end(w, "LineString")?;
-                }
+        // (style id, colour aabbggrr, width): with flown curves the waypoints are a thin, paler
+        // line under the flown curve, so the corners the vehicle cuts show.
+        let styles: &[(&str, &str, &str)] = if labelled {
+            &[(KIND_WAYPOINTS, "b30080ff", "1.5"), (KIND_FLOWN, "ff0080ff", "3")]
+        } else {
+            &[("route", "ff0080ff", "3")]
+        };
+        for (id, color, width) in styles {
+            start(w, "Style", &[("id", id)])?;
+            start(w, "LineStyle", &[])?;
+            element(w, "color", color)?;
+            element(w, "width", width)?;
+            end(w, "LineStyle")?;
+            end(w, "Style")?;
+        }
+        for t in tracks(report, f) {
+            if labelled {
+                kml_line(w, &t.name, KIND_WAYPOINTS, Some(KIND_WAYPOINTS), &t.waypoints, geo)?;
+            } else {
+                kml_line(w, &t.name, "route", None, &t.waypoints, geo)?;
             }
-            end(w, "Placemark")?;
-            let ends = [("start", track.first()), ("goal", track.last())];
+            if let Some(flown) = &t.flown {
+                kml_line(w, &format!("{} (flown)", t.name), KIND_FLOWN, Some(KIND_FLOWN), flown, geo)?;
+            }
+            let ends = [("start", t.waypoints.first()), ("goal", t.waypoints.last())];
             for (what, p) in ends.into_iter().filter_map(|(w, p)| p.map(|p| (w, p))) {
                 start(w, "Placemark", &[])?;
-                element(w, "name", &format!("{name} {what}"))?;
+                element(w, "name", &format!("{} {what}", t.name))?;
                 start(w, "Point", &[])?;
                 element(w, "altitudeMode", "absolute")?;
-                element(w, "coordinates", &coord(p, ","))?;
+                element(w, "coordinates", &kml_coord(p, ","))?;
                 end(w, "Point")?;
                 end(w, "Placemark")?;
             }
@@ -347,8 +419,54 @@ fn kml(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     })
 }
 
+fn kml_coord(p: &Point, sep: &str) -> String {
+    format!("{:.7}{sep}{:.7}{sep}{}", p.lon, p.lat, fixed(p.z, 2))
+}
+
+/// One line placemark: a `gx:Track` when every point has a UTC time, else a `LineString`;
+/// `kind`, when given, goes in its `ExtendedData`.
+fn kml_line(w: &mut Xml, name: &str, style: &str, kind: Option<&str>, line: &[Point], geo: Georef<'_>) -> Result<()> {
+    start(w, "Placemark", &[])?;
+    element(w, "name", name)?;
+    element(w, "styleUrl", &format!("#{style}"))?;
+    if let Some(kind) = kind {
+        start(w, "ExtendedData", &[])?;
+        start(w, "Data", &[("name", "kind")])?;
+        element(w, "value", kind)?;
+        end(w, "Data")?;
+        end(w, "ExtendedData")?;
+    }
+    let times: Option<Vec<String>> = line.iter().map(|p| utc(geo.epoch, p.t)).collect();
+    match times {
+        Some(times) if !line.is_empty() => {
+            start(w, "gx:Track", &[])?;
+            element(w, "altitudeMode", "absolute")?;
+            for t in &times {
+                element(w, "when", t)?;
+            }
+            for p in line {
+                element(w, "gx:coord", &kml_coord(p, " "))?;
+            }
+            end(w, "gx:Track")?;
+        }
+        _ => {
+            start(w, "LineString", &[])?;
+            element(w, "altitudeMode", "absolute")?;
+            let coords: Vec<String> = line.iter().map(|p| kml_coord(p, ",")).collect();
+            element(w, "coordinates", &coords.join(" "))?;
+            end(w, "LineString")?;
+        }
+    }
+    end(w, "Placemark")
+}
+
+/// GPX 1.1 for chart plotters: one track per mission. With a turning radius, the waypoints of
+/// every mission are a route (`<rte>`, what a plotter or autopilot follows) and the flown
+/// curves are tracks (`<trk>`, with times); `<type>` says which, and GPX's order puts every
+/// route before the tracks.
 fn gpx(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
     let f = frame(geo, ".gpx")?;
+    let labelled = has_flown(report);
     xml_document(|w| {
         start(
             w,
@@ -359,22 +477,49 @@ fn gpx(report: &PlanReport, geo: Georef<'_>) -> Result<String> {
         element(w, "name", &report.scenario)?;
         element(w, "desc", &format!("{} plan: {}: {}", report.planner, report.status, report.reason))?;
         end(w, "metadata")?;
-        for (name, track) in tracks(report, f) {
-            start(w, "trk", &[])?;
-            element(w, "name", &name)?;
-            start(w, "trkseg", &[])?;
-            for p in &track {
-                let (lat, lon) = (format!("{:.7}", p.lat), format!("{:.7}", p.lon));
-                start(w, "trkpt", &[("lat", &lat), ("lon", &lon)])?;
-                element(w, "ele", &fixed(p.z, 2))?;
-                if let Some(t) = utc(geo.epoch, p.t) {
-                    element(w, "time", &t)?;
-                }
-                end(w, "trkpt")?;
+        let tracks = tracks(report, f);
+        if labelled {
+            for t in &tracks {
+                start(w, "rte", &[])?;
+                element(w, "name", &t.name)?;
+                element(w, "type", KIND_WAYPOINTS)?;
+                gpx_points(w, "rtept", &t.waypoints, geo)?;
+                end(w, "rte")?;
             }
-            end(w, "trkseg")?;
-            end(w, "trk")?;
+            for t in &tracks {
+                let Some(flown) = &t.flown else { continue };
+                start(w, "trk", &[])?;
+                element(w, "name", &format!("{} (flown)", t.name))?;
+                element(w, "type", KIND_FLOWN)?;
+                start(w, "trkseg", &[])?;
+                gpx_points(w, "trkpt", flown, geo)?;
+                end(w, "trkseg")?;
+                end(w, "trk")?;
+            }
+        } else {
+            for t in &tracks {
+                start(w, "trk", &[])?;
+                element(w, "name", &t.name)?;
+                start(w, "trkseg", &[])?;
+                gpx_points(w, "trkpt", &t.waypoints, geo)?;
+                end(w, "trkseg")?;
+                end(w, "trk")?;
+            }
         }
         end(w, "gpx")
     })
+}
+
+/// `<tag lat lon>` points with their elevation and, with an epoch, UTC time.
+fn gpx_points(w: &mut Xml, tag: &str, line: &[Point], geo: Georef<'_>) -> Result<()> {
+    for p in line {
+        let (lat, lon) = (format!("{:.7}", p.lat), format!("{:.7}", p.lon));
+        start(w, tag, &[("lat", &lat), ("lon", &lon)])?;
+        element(w, "ele", &fixed(p.z, 2))?;
+        if let Some(t) = utc(geo.epoch, p.t) {
+            element(w, "time", &t)?;
+        }
+        end(w, tag)?;
+    }
+    Ok(())
 }

@@ -2,6 +2,11 @@
 //! `plan --init`. Field meanings are documented in README.md ("Plan JSON"); keep the two in
 //! step. The format is versioned: version 2 holds one timed path per mission and a status;
 //! files written by version 1 (one path at the top level) still load.
+//!
+//! Optional fields that a reader may ignore without misreading the file (the frame, the
+//! search's counters, a mission's `flown` curve) were added within version 3: an older
+//! tidepath still reads such a file, and reads the same routes from it. The version goes up
+//! only when an older reader would misread a file.
 
 use serde::{Deserialize, Serialize};
 
@@ -13,7 +18,8 @@ use tidepath::termination::StopReason;
 
 /// The version this build writes. Version 3 adds each mission's own status, reason and
 /// distance left to the goal, and the search's checks and graph size; files of versions 1 and
-/// 2 still load.
+/// 2 still load. A mission's `flown` curve (with a turning radius) is optional and ignored when
+/// routes are read back, so it came within version 3.
 pub const PLAN_FORMAT_VERSION: u32 = 3;
 
 /// Most points a plan file's path may hold: far beyond any planner's output, small enough to
@@ -46,8 +52,14 @@ pub struct MissionReport {
     /// Cost of `waypoints` before smoothing, when a smoother ran.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub raw_cost: Option<f64>,
-    /// Arrival time (s, scenario clock) at each point of the final path.
+    /// Arrival time (s, scenario clock) at each point of the final path; with a turning
+    /// radius, at an interior waypoint the time halfway round its turn.
     pub times: Vec<f64>,
+    /// With a turning radius: the curve the vehicle flies along the final path (a fillet at
+    /// each interior waypoint), as the evaluation sampled it, with its times. Absent without a
+    /// radius. Never read back as a route: the waypoints are the route.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub flown: Option<FlownReport>,
     /// `null` when nothing was planned (the status says why).
     pub cost: Option<f64>,
     /// The weighted terms of the cost model, in the model's order; they sum to `cost`.
@@ -67,6 +79,25 @@ pub struct MissionReport {
     /// the figure drawn by the same run; not written to the file.
     #[serde(skip)]
     pub focus: Option<Focus>,
+}
+
+/// The flown curve of a mission: points in the file's frame, like its waypoints, and the
+/// arrival time at each (s, scenario clock), from the departure to the arrival at the goal.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FlownReport {
+    pub points: Vec<[f64; 3]>,
+    pub times: Vec<f64>,
+}
+
+impl FlownReport {
+    fn new(f: &tidepath::path::Flown) -> Self {
+        Self { points: points(&f.points), times: f.times.clone() }
+    }
+
+    /// The points as vectors (in the file's frame).
+    pub fn vectors(&self) -> Vec<Vec3> {
+        self.points.iter().map(|p| Vec3::from_array(*p)).collect()
+    }
 }
 
 fn unknown_status() -> Status {
@@ -143,6 +174,10 @@ pub struct GeoReport {
     pub epoch: Option<String>,
     /// Per mission, the final path as [longitude, latitude, depth_m] (depth positive down).
     pub paths: Vec<Vec<[f64; 3]>>,
+    /// With a turning radius, per mission its flown curve in the same layout as `paths`
+    /// (`null` for a mission without one); absent when no mission has one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub flown: Option<Vec<Option<Vec<[f64; 3]>>>>,
 }
 
 fn metres() -> String {
@@ -165,6 +200,7 @@ impl MissionReport {
             smoothed: m.smoothed.as_deref().map(points),
             raw_cost: m.raw_cost,
             times: m.times.clone(),
+            flown: m.flown.as_ref().map(FlownReport::new),
             cost: finite(m.cost),
             cost_terms: m.terms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect(),
             feasible: m.feasible,
@@ -227,25 +263,27 @@ impl PlanReport {
         epoch: Option<chrono::DateTime<chrono::Utc>>,
     ) -> Self {
         if let Some(f) = frame {
-            let paths = self
+            let degrees = |pts: &[Vec3]| -> Vec<[f64; 3]> {
+                pts.iter()
+                    .map(|p| {
+                        let (lon, lat) = f.inverse(p.x, p.y);
+                        [(lon * 1e7).round() / 1e7, (lat * 1e7).round() / 1e7, -p.z + 0.0]
+                    })
+                    .collect()
+            };
+            let paths = self.missions.iter().map(|m| degrees(&m.points())).collect();
+            let flown = self
                 .missions
                 .iter()
-                .map(|m| {
-                    m.points()
-                        .iter()
-                        .map(|p| {
-                            let (lon, lat) = f.inverse(p.x, p.y);
-                            [(lon * 1e7).round() / 1e7, (lat * 1e7).round() / 1e7, -p.z + 0.0]
-                        })
-                        .collect()
-                })
-                .collect();
+                .any(|m| m.flown.is_some())
+                .then(|| self.missions.iter().map(|m| m.flown.as_ref().map(|c| degrees(&c.vectors()))).collect());
             self.geographic = Some(GeoReport {
                 projection: "azimuthal-equidistant-wgs84".into(),
                 origin_lon: f.lon0,
                 origin_lat: f.lat0,
                 epoch: epoch.map(|e| e.to_rfc3339_opts(chrono::SecondsFormat::Secs, true)),
                 paths,
+                flown,
             });
         }
         self

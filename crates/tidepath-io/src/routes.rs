@@ -6,6 +6,12 @@
 //! `LineString` or `gx:Track` placemark (points, such as the start and goal marks, are
 //! skipped), CSV rows grouped by their `mission` column in order of first appearance.
 //!
+//! The curve a vehicle with a turning radius flies, which exports write beside its waypoints,
+//! is not a route and is skipped: a GeoJSON feature with `kind` "flown", a GPX track or route
+//! whose `<type>` is "flown", a KML placemark whose `ExtendedData` says `kind` "flown", CSV
+//! rows whose `kind` column says "flown". The waypoints are the route; the scenario flies
+//! them again.
+//!
 //! Frames: GeoJSON, GPX and KML are longitude/latitude with an elevation (z = -depth); a CSV
 //! is longitude/latitude when it has `lat` and `lon` columns (with `depth_m`), metres when it
 //! has `x_m`, `y_m`, `z_m`; a plan JSON is metres unless it says `"frame": "lonlat"` (then its
@@ -22,7 +28,13 @@ use quick_xml::events::Event;
 use tidepath::error::{Error, Result};
 use tidepath::geom::Vec3;
 
+use crate::export::KIND_FLOWN;
 use crate::plan_json::{PlanFile, RouteFrame, MAX_PLAN_POINTS};
+
+/// Whether a line's `kind` label marks a flown curve (not a route).
+fn is_flown(kind: &str) -> bool {
+    kind.trim().eq_ignore_ascii_case(KIND_FLOWN)
+}
 
 /// The route file formats, by extension.
 pub const ROUTE_EXTENSIONS: &str = ".json, .geojson, .gpx, .kml, .csv";
@@ -112,6 +124,9 @@ fn geojson_routes(text: &str, source: &str) -> Result<Vec<Route>> {
     };
     let mut routes = Vec::new();
     for f in features {
+        if f.property("kind").and_then(|v| v.as_str()).is_some_and(is_flown) {
+            continue;
+        }
         let name = f.property("name").and_then(|v| v.as_str()).map(str::to_string);
         // The export's per-point depths, when present, say the depth exactly.
         let depths: Option<Vec<f64>> = f
@@ -212,16 +227,21 @@ fn number(text: &str, what: &str, source: &str, at: u64) -> Result<f64> {
 }
 
 /// GPX 1.1: each `trk` (its `trkseg`s joined) or `rte` is a route of `trkpt`/`rtept` points
-/// with `lat` and `lon` attributes and an optional `ele`.
+/// with `lat` and `lon` attributes and an optional `ele`; one whose `<type>` is "flown" is
+/// skipped.
 fn gpx_routes(text: &str, source: &str) -> Result<Vec<Route>> {
     let mut routes: Vec<Route> = Vec::new();
     let mut current: Option<Route> = None;
+    let mut flown = false;
     let mut in_point = false;
     let mut field = String::new();
     xml_walk(text, source, |ev| {
         match ev {
             XmlEvent::Open { name, attrs, at } => match name {
-                "trk" | "rte" => current = Some(Route { name: None, points: Vec::new() }),
+                "trk" | "rte" => {
+                    current = Some(Route { name: None, points: Vec::new() });
+                    flown = false;
+                }
                 "trkpt" | "rtept" => {
                     let get = |k: &str| attrs.iter().find(|(a, _)| a == k).map(|(_, v)| v.as_str());
                     let (Some(lat), Some(lon)) = (get("lat"), get("lon")) else {
@@ -246,12 +266,14 @@ fn gpx_routes(text: &str, source: &str) -> Result<Vec<Route>> {
                         }
                     } else if !in_point && field == "name" && r.name.is_none() {
                         r.name = Some(text.trim().to_string());
+                    } else if !in_point && field == "type" && is_flown(text) {
+                        flown = true;
                     }
                 }
             }
             XmlEvent::Close { name } => match name {
                 "trkpt" | "rtept" => in_point = false,
-                "trk" | "rte" => routes.extend(current.take()),
+                "trk" | "rte" => routes.extend(current.take().filter(|_| !flown)),
                 _ => field.clear(),
             },
         }
@@ -262,22 +284,30 @@ fn gpx_routes(text: &str, source: &str) -> Result<Vec<Route>> {
 
 /// KML 2.2: each placemark with a `LineString` (its `coordinates`, "lon,lat[,alt]" tuples) or
 /// a `gx:Track` (its `gx:coord`s, "lon lat alt") is a route; a placemark with both gives its
-/// track once. Point placemarks are skipped.
+/// track once. Point placemarks are skipped, and so are placemarks whose `ExtendedData` has
+/// `<Data name="kind">` "flown".
 fn kml_routes(text: &str, source: &str) -> Result<Vec<Route>> {
     let mut routes: Vec<Route> = Vec::new();
     let mut current: Option<(Option<String>, Vec<Vec3>, Vec<Vec3>)> = None;
     let mut field = String::new();
+    // Inside `<Data name="kind">`, and whether this placemark's kind is "flown".
+    let (mut in_kind, mut flown) = (false, false);
     xml_walk(text, source, |ev| {
         match ev {
-            XmlEvent::Open { name, .. } => {
+            XmlEvent::Open { name, attrs, .. } => {
                 if name == "Placemark" {
                     current = Some((None, Vec::new(), Vec::new()));
+                    flown = false;
+                }
+                if name == "Data" {
+                    in_kind = attrs.iter().any(|(k, v)| k == "name" && v == "kind");
                 }
                 field = name.to_string();
             }
             XmlEvent::Text { text, at } => {
                 let Some((pname, line, track)) = current.as_mut() else { return Ok(()) };
                 match field.as_str() {
+                    "value" if in_kind => flown = is_flown(text),
                     "name" if pname.is_none() => *pname = Some(text.trim().to_string()),
                     "coordinates" => {
                         for tuple in text.split_whitespace() {
@@ -321,8 +351,11 @@ fn kml_routes(text: &str, source: &str) -> Result<Vec<Route>> {
                 }
             }
             XmlEvent::Close { name } => {
+                if name == "Data" {
+                    in_kind = false;
+                }
                 if name == "Placemark" {
-                    if let Some((pname, line, track)) = current.take() {
+                    if let Some((pname, line, track)) = current.take().filter(|_| !flown) {
                         // A Point placemark (the start and goal marks) holds one coordinate.
                         let points = if track.len() >= 2 { track } else { line };
                         if points.len() >= 2 {
@@ -338,8 +371,9 @@ fn kml_routes(text: &str, source: &str) -> Result<Vec<Route>> {
     Ok(routes)
 }
 
-/// CSV with a header: `mission`, optional `point` (the order within a mission), and either
-/// `lat`, `lon` (with optional `depth_m`) or `x_m`, `y_m`, `z_m`.
+/// CSV with a header: `mission`, optional `point` (the order within a mission), optional
+/// `kind` (rows of kind "flown" are skipped), and either `lat`, `lon` (with optional
+/// `depth_m`) or `x_m`, `y_m`, `z_m`.
 fn csv_routes(text: &str, source: &str) -> Result<PlanFile> {
     let mut reader = csv::ReaderBuilder::new().has_headers(true).flexible(false).from_reader(text.as_bytes());
     let headers = reader.headers().map_err(|e| Error::input(source, format!("unreadable CSV header: {e}")))?.clone();
@@ -354,12 +388,15 @@ fn csv_routes(text: &str, source: &str) -> Result<PlanFile> {
             ))
         }
     };
-    let (mission, point) = (col("mission"), col("point"));
+    let (mission, point, kind) = (col("mission"), col("point"), col("kind"));
     // Missions in order of first appearance; points ordered by `point` when given.
     let mut routes: Vec<(String, Vec<(f64, Vec3)>)> = Vec::new();
     for (row, record) in reader.records().enumerate() {
         let line = row + 2;
         let record = record.map_err(|e| Error::input(source, format!("line {line}: {e}")))?;
+        if kind.and_then(|k| record.get(k)).is_some_and(is_flown) {
+            continue;
+        }
         let field = |k: usize, what: &str| -> Result<f64> {
             let t = record.get(k).unwrap_or("").trim();
             t.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| {

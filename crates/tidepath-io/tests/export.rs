@@ -215,3 +215,199 @@ fn every_export_reads_back_as_the_same_route() {
         }
     }
 }
+
+/// A built-in with a turning radius (m) for its vehicle, and an `astar` plan on it: its
+/// corners are sharper than the radius allows, so it is infeasible, but the flown curve
+/// exists all the same.
+fn planned_with_radius(name: &str, radius: f64, departure: Option<&str>) -> (Scenario, PlanReport) {
+    let mut text = tidepath_io::scenario::builtin(name)
+        .unwrap()
+        .replace("[vehicle]\n", &format!("[vehicle]\nturn_radius = {radius}\n"));
+    if let Some(d) = departure {
+        text = text.replace("[mission]\n", &format!("[mission]\ndeparture = \"{d}\"\n"));
+    }
+    let s = Scenario::from_toml(&text, &format!("builtin:{name}")).unwrap();
+    assert_eq!(s.vehicle.turn_radius, Some(radius));
+    let r =
+        s.plan(&PlanRequest { planner: Some("astar".into()), seed: 1, ..PlanRequest::default() }, &mut |_| {}).unwrap();
+    assert!(r.missions[0].points().len() >= 3, "{name}: {}", r.reason);
+    (s, r)
+}
+
+/// The plan JSON carries each mission's flown curve (metres, with times; in degrees under
+/// `geographic`) with a radius and nothing without one; both load again as the same report,
+/// and a plan file read back as a route gives the waypoints, not the flown curve.
+#[test]
+fn plan_json_round_trips_with_and_without_the_flown_curve() {
+    let (s, r) = planned_with_radius("salish", 500.0, None);
+    let flown = r.missions[0].flown.as_ref().expect("a radius gives a flown curve");
+    let waypoints = r.missions[0].points();
+    assert!(flown.points.len() > waypoints.len(), "{} flown points", flown.points.len());
+    assert_eq!(flown.points.len(), flown.times.len());
+    let text = r.to_json();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v["version"], 3);
+    let m = &v["missions"][0];
+    assert_eq!(m["flown"]["points"].as_array().unwrap().len(), flown.points.len());
+    assert_eq!(m["flown"]["times"].as_array().unwrap().len(), flown.points.len());
+    assert!(m["metrics"]["min_turn_radius_m"].is_number(), "{}", m["metrics"]);
+    let geo_flown = v["geographic"]["flown"][0].as_array().unwrap();
+    assert_eq!(geo_flown.len(), flown.points.len());
+    // The degrees are the metres through the frame (to 1 cm), depth positive down.
+    let f = s.frame.as_ref().unwrap();
+    for (p, q) in flown.points.iter().zip(geo_flown) {
+        let (lon, lat) = (q[0].as_f64().unwrap(), q[1].as_f64().unwrap());
+        let (x, y) = f.forward(lon, lat, "t").unwrap();
+        assert!((x - p[0]).abs() < 0.05 && (y - p[1]).abs() < 0.05, "{p:?} vs {q}");
+        assert_eq!(q[2].as_f64().unwrap(), -p[2] + 0.0);
+    }
+    // Loads again as the same report (numbers to a last-digit rounding of the JSON reader).
+    let back: PlanReport = serde_json::from_str(&text).unwrap();
+    let fb = back.missions[0].flown.as_ref().unwrap();
+    assert_eq!(fb.points.len(), flown.points.len());
+    for (a, b) in fb.points.iter().flatten().chain(&fb.times).zip(flown.points.iter().flatten().chain(&flown.times)) {
+        assert!((a - b).abs() <= 1e-9 * b.abs().max(1.0), "{a} vs {b}");
+    }
+    // Read back as a route: the waypoints.
+    let file = tidepath_io::PlanFile::parse(&text, "p.json").unwrap();
+    let read = file.mission_paths();
+    assert_eq!(read.len(), 1);
+    assert_eq!(read[0].len(), waypoints.len());
+    for (p, q) in read[0].iter().zip(&waypoints) {
+        assert!(p.distance(*q) < 1e-6, "{p:?} vs {q:?}");
+    }
+
+    // Without a radius: no flown curve anywhere in the file, and it loads as before.
+    let (_, plain) = planned("salish");
+    assert!(plain.missions[0].flown.is_none());
+    let text = plain.to_json();
+    assert!(!text.contains("flown") && !text.contains("min_turn_radius_m"), "{text}");
+    let back: PlanReport = serde_json::from_str(&text).unwrap();
+    assert!(back.missions[0].flown.is_none() && back.geographic.as_ref().unwrap().flown.is_none());
+}
+
+/// The flown curve's points in metres, from latitude/longitude pairs.
+fn assert_same_flown(s: &Scenario, r: &PlanReport, lonlat: &[(f64, f64)]) {
+    let flown = &r.missions[0].flown.as_ref().unwrap().points;
+    let xy = back_to_metres(s, lonlat);
+    assert_eq!(xy.len(), flown.len());
+    for (p, q) in flown.iter().zip(&xy) {
+        assert!((p[0] - q.0).abs() < 0.05 && (p[1] - q.1).abs() < 0.05, "{p:?} vs {q:?}");
+    }
+}
+
+/// With a radius every format holds the flown curve as its own line, labelled, beside the
+/// waypoints: GeoJSON a second feature of kind "flown", GPX a track of type "flown" after the
+/// waypoints' route, KML a "(flown)" placemark, CSV rows of kind "flown".
+#[test]
+fn every_export_carries_the_flown_curve_labelled() {
+    use geojson::{GeoJson, GeometryValue};
+    let (s, r) = planned_with_radius("salish", 500.0, Some("2025-11-12T06:00:00Z"));
+    let flown = r.missions[0].flown.clone().unwrap();
+
+    let text = export(&r, ExportFormat::GeoJson, geo(&s)).unwrap();
+    let GeoJson::FeatureCollection(fc) = text.parse().unwrap() else { panic!("not a FeatureCollection") };
+    let kinds: Vec<&str> = fc.features.iter().map(|f| f.property("kind").unwrap().as_str().unwrap()).collect();
+    assert_eq!(kinds, ["waypoints", "flown"]);
+    let line = |f: &geojson::Feature| -> Vec<(f64, f64)> {
+        let GeometryValue::LineString { coordinates } = &f.geometry.as_ref().unwrap().value else { panic!() };
+        coordinates.iter().map(|p| (p[0], p[1])).collect()
+    };
+    assert_same_points(&s, &r, &line(&fc.features[0]));
+    assert_same_flown(&s, &r, &line(&fc.features[1]));
+    let f = &fc.features[1];
+    assert_eq!(f.property("name"), fc.features[0].property("name"));
+    let times: Vec<f64> =
+        f.property("time_s").unwrap().as_array().unwrap().iter().map(|t| t.as_f64().unwrap()).collect();
+    assert_eq!(times.len(), flown.times.len());
+    for (t, want) in times.iter().zip(&flown.times) {
+        assert!((t - want).abs() <= 0.0005 + 1e-9, "{t} vs {want}");
+    }
+    assert_eq!(f.property("utc").unwrap().as_array().unwrap()[0], "2025-11-12T06:00:00.000Z");
+
+    let gpx = export(&r, ExportFormat::Gpx, geo(&s)).unwrap();
+    assert_eq!(xml_points(&gpx, b"type"), ["waypoints", "flown"]);
+    assert!(gpx.find("<rte>").unwrap() < gpx.find("<trk>").unwrap(), "{gpx}");
+    let pick = |tag: &[u8]| -> Vec<(f64, f64)> {
+        xml_points(&gpx, tag)
+            .iter()
+            .filter(|a| a.contains("lat="))
+            .map(|a| {
+                let get =
+                    |k: &str| a.split(' ').find_map(|kv| kv.strip_prefix(&format!("{k}="))).unwrap().parse().unwrap();
+                (get("lon"), get("lat"))
+            })
+            .collect()
+    };
+    assert_same_points(&s, &r, &pick(b"rtept"));
+    assert_same_flown(&s, &r, &pick(b"trkpt"));
+    // Times on both: the route's waypoints and every point of the flown track.
+    assert_eq!(xml_points(&gpx, b"time").len(), r.missions[0].times.len() + flown.times.len());
+
+    let kml = export(&r, ExportFormat::Kml, geo(&s)).unwrap();
+    let names = xml_points(&kml, b"name");
+    assert!(names.iter().any(|n| n == "mission (flown)"), "{names:?}");
+    assert_eq!(xml_points(&kml, b"value"), ["waypoints", "flown"]);
+    // With an epoch both lines are timed tracks: a <when> per point of each.
+    assert_eq!(xml_points(&kml, b"when").len(), r.missions[0].times.len() + flown.times.len());
+
+    let csv = export(&r, ExportFormat::Csv, geo(&s)).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some("mission,kind,point,lat,lon,depth_m,time_s,utc"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let of = |kind: &str| -> Vec<(f64, f64)> {
+        rows.iter().filter(|c| c[1] == kind).map(|c| (c[4].parse().unwrap(), c[3].parse().unwrap())).collect()
+    };
+    assert_same_points(&s, &r, &of("waypoints"));
+    assert_same_flown(&s, &r, &of("flown"));
+    assert_eq!(rows.len(), r.missions[0].times.len() + flown.times.len());
+
+    // A local scenario's CSV labels its rows the same way, in metres.
+    let (d, rd) = planned_with_radius("headland", 60.0, None);
+    let local = export(&rd, ExportFormat::Csv, geo(&d)).unwrap();
+    assert!(local.starts_with("mission,kind,point,x_m,y_m,z_m,time_s\n"), "{local}");
+    let n = rd.missions[0].flown.as_ref().unwrap().points.len();
+    assert_eq!(local.lines().filter(|l| l.contains(",flown,")).count(), n);
+}
+
+/// Without a radius no export names a kind or a flown curve: one line per mission, as before.
+#[test]
+fn exports_without_a_radius_have_no_flown_line() {
+    let (s, r) = planned("salish");
+    for f in [ExportFormat::GeoJson, ExportFormat::Gpx, ExportFormat::Kml, ExportFormat::Csv] {
+        let text = export(&r, f, geo(&s)).unwrap();
+        assert!(!text.contains("flown") && !text.contains("kind") && !text.contains("waypoints"), "{f:?}: {text}");
+    }
+    let gpx = export(&r, ExportFormat::Gpx, geo(&s)).unwrap();
+    assert!(gpx.contains("<trk>") && !gpx.contains("<rte>"), "{gpx}");
+}
+
+/// With a radius every export is read back (as `eval` and `plan --init` read it) as the
+/// waypoints, not the flown curve: the same points as the plan's, depth included.
+#[test]
+fn every_export_with_a_radius_reads_back_as_the_waypoints() {
+    let (s, r) = planned_with_radius("salish", 500.0, Some("2025-11-12T06:00:00Z"));
+    let want = r.missions[0].points();
+    let dir = tempfile::tempdir().unwrap();
+    for (ext, f) in [
+        ("json", ExportFormat::Json),
+        ("geojson", ExportFormat::GeoJson),
+        ("gpx", ExportFormat::Gpx),
+        ("kml", ExportFormat::Kml),
+        ("csv", ExportFormat::Csv),
+    ] {
+        let path = dir.path().join(format!("route.{ext}"));
+        std::fs::write(&path, export(&r, f, geo(&s)).unwrap()).unwrap();
+        let file = tidepath_io::routes::read(&path).unwrap();
+        let got = s.route_paths(&file, "route").unwrap();
+        assert_eq!(got.len(), 1, "{ext}");
+        assert_eq!(got[0].len(), want.len(), "{ext}");
+        for (p, q) in got[0].iter().zip(&want) {
+            assert!(p.distance(*q) < 0.03, "{ext}: {p:?} vs {q:?}");
+        }
+        // Judged again, the route flies the same curve.
+        let judged = s.evaluate_paths(&got).unwrap();
+        let again = judged[0].flown.as_ref().unwrap();
+        assert_eq!(again.points.len(), r.missions[0].flown.as_ref().unwrap().points.len(), "{ext}");
+    }
+}
