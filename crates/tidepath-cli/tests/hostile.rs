@@ -350,6 +350,28 @@ fn eval_of_a_hundred_thousand_far_away_waypoints_ends_quickly() {
     assert!(r.took < Duration::from_secs(30), "{:?}", r.took);
 }
 
+/// With a turning radius every turn is judged on chords: a plan of 100,000 quarter turns at a
+/// 400 m radius with a millimetre arc tolerance asks for more chords than the evaluation's limit, and is refused
+/// in one line before any is flown.
+#[test]
+fn eval_of_a_hundred_thousand_finely_judged_turns_is_refused_before_flying_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let toml = demo_text()
+        .replace("safety_distance = 25.0", "safety_distance = 25.0\nturn_radius = 400.0")
+        .replace("[model]", "[model]\narc_tolerance = 0.001");
+    assert!(toml.contains("turn_radius") && toml.contains("arc_tolerance"), "the demo's text changed");
+    std::fs::write(dir.path().join("turns.toml"), toml).unwrap();
+    // Round and round a 900 m square: every quarter turn fits the 400 m radius.
+    let corners = ["[5000, 5000, -400]", "[5900, 5000, -400]", "[5900, 5900, -400]", "[5000, 5900, -400]"];
+    let mut pts = vec!["[1000, 6000, -400]".to_string()];
+    pts.extend((0..99_998).map(|i| corners[i % 4].to_string()));
+    pts.push("[19000, 6500, -300]".into());
+    std::fs::write(dir.path().join("zig.json"), format!("{{\"waypoints\": [{}]}}", pts.join(","))).unwrap();
+    let r = run(dir.path(), &["eval", "turns.toml", "zig.json"]);
+    refused(&r, &["judging these paths", "arc_tolerance"]);
+    assert!(r.took < Duration::from_secs(10), "{:?}", r.took);
+}
+
 #[test]
 fn feature_counts_beyond_their_limit_are_refused() {
     let dir = tempfile::tempdir().unwrap();

@@ -301,13 +301,13 @@ impl Scenario {
         let mut pieces = 0u64;
         for (i, p) in paths.iter().enumerate() {
             let model = self.mission_model(i);
-            pieces += p.windows(2).map(|w| u64::from(model.validator.pieces_of(w[0].distance(w[1])))).sum::<u64>();
+            pieces += model.pieces_to_judge(p);
         }
         if pieces > MAX_EVAL_PIECES {
             return Err(Error::input(
                 "plan",
                 format!(
-                    "judging these paths means flying {pieces} pieces of model.current_step = {} m, more than the limit of {MAX_EVAL_PIECES}: use fewer or shorter segments",
+                    "judging these paths means flying {pieces} pieces of model.current_step = {} m, more than the limit of {MAX_EVAL_PIECES}: use fewer or shorter segments (or, with a turning radius, a larger model.arc_tolerance)",
                     self.settings.current_step
                 ),
             ));

@@ -87,6 +87,28 @@ impl PathModel<'_> {
         t
     }
 
+    /// How many pieces of current integration judging `points` takes (the motions' pieces; a
+    /// turn's chords each count), so callers can bound the work a hostile path asks for before
+    /// starting it. Geometry only: no motion is checked.
+    pub fn pieces_to_judge(&self, points: &[Vec3]) -> u64 {
+        let v = &self.validator;
+        let Some(r) = self.turn_radius() else {
+            return points.windows(2).map(|w| u64::from(v.pieces_of(w[0].distance(w[1])))).sum();
+        };
+        let tol = self.settings.arc_tolerance;
+        let mut n = 0u64;
+        fillet::for_each_piece(points, r, |piece| match piece {
+            FlownPiece::Line { a, b, .. } => n += u64::from(v.pieces_of(a.distance(b))),
+            FlownPiece::Arc(arc) => {
+                let k = arc.chords(tol) as u64;
+                if k > 0 {
+                    n += k * u64::from(v.pieces_of(arc.a.distance(arc.point(1.0 / k as f64))));
+                }
+            }
+        });
+        n
+    }
+
     /// The flown curve of `points` (the motions' ends) with the arrival time at each point, on
     /// the evaluation's clock; `None` when the vehicle has no turning radius (it then flies
     /// the polyline itself).
