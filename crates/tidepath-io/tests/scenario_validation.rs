@@ -76,6 +76,15 @@ fn vehicle_values() {
     rejects(&with("safety_distance = 25.0", "safety_distance = -5.0"), "vehicle.safety_distance", "-5");
     rejects(&with("max_pitch_deg = 30.0", "max_pitch_deg = 95.0"), "vehicle.max_pitch_deg", "95");
     rejects(&with("max_turn_deg = 60.0", "max_turn_deg = \"wide\""), "vehicle.max_turn_deg", "wide");
+    let radius = |r: &str| with("safety_distance = 25.0", &format!("safety_distance = 25.0\nturn_radius = {r}"));
+    rejects(&radius("-5.0"), "vehicle.turn_radius", "-5");
+    rejects(&radius("0.0"), "vehicle.turn_radius", "0");
+    rejects(&radius("2e6"), "vehicle.turn_radius", "2000000");
+    rejects(&radius("nan"), "vehicle.turn_radius", "finite");
+    let s = Scenario::from_toml(&radius("35.5"), "test.toml").unwrap();
+    assert_eq!(s.missions[0].vehicle.turn_radius, Some(35.5));
+    assert!(s.warnings.iter().all(|w| !w.contains("turn_radius")), "{:?}", s.warnings);
+    assert_eq!(Scenario::from_toml(&demo(), "demo").unwrap().missions[0].vehicle.turn_radius, None);
 }
 
 #[test]
@@ -115,6 +124,10 @@ fn invalid_start_and_goal_are_statuses() {
 fn model_cost_encoding_planner_values() {
     rejects(&with("travel_time = \"crab\"", "travel_time = \"teleport\""), "model.travel_time", "teleport");
     rejects(&with("current_step = 250.0", "current_step = 0.0"), "model.current_step", "0");
+    let tol = |t: &str| with("current_step = 250.0", &format!("current_step = 250.0\narc_tolerance = {t}"));
+    rejects(&tol("0.0"), "model.arc_tolerance", "0");
+    rejects(&tol("11.0"), "model.arc_tolerance", "11");
+    assert_eq!(Scenario::from_toml(&tol("0.2"), "test.toml").unwrap().settings.arc_tolerance, 0.2);
     rejects(&with("model = \"general\"", "model = \"fancy\""), "cost.model", "fancy");
     rejects(&with("collision = 10.0", "collision = -1.0"), "cost.weights.collision", "-1");
     rejects(&with("length = 1.0, time = 1.0", "length = 1.0, tim = 1.0"), "cost.weights", "tim");
