@@ -2,6 +2,7 @@
 //! OMPL's `PathSimplifier`. The paper-specific ones (Dubins for wpa2017, B-splines with
 //! midpoint insertion for ijs2023, excluding and contracting for amfa2015) join this folder.
 
+pub mod dubins;
 pub mod shortcut;
 
 pub use shortcut::Shortcut;
@@ -33,13 +34,22 @@ pub trait Smoother: Send + Sync {
 pub type BuildSmoother = fn(&toml::Table, &str) -> Result<Box<dyn Smoother>>;
 
 /// The smoothers, selected by `--smooth` or `[planner] smoother`.
-pub const SMOOTHERS: &[Entry<BuildSmoother>] = &[Entry {
-    id: "shortcut",
-    description: "drop waypoints whose bypass is feasible and no costlier",
-    citation: "tidepath (the deterministic form of OMPL's PathSimplifier::reduceVertices)",
-    params: shortcut::ShortcutParams::SPECS,
-    build: |t, prefix| Ok(Box::new(Shortcut::new(shortcut::ShortcutParams::from_table(t, prefix)?))),
-}];
+pub const SMOOTHERS: &[Entry<BuildSmoother>] = &[
+    Entry {
+        id: "shortcut",
+        description: "drop waypoints whose bypass is feasible and no costlier",
+        citation: "tidepath (the deterministic form of OMPL's PathSimplifier::reduceVertices)",
+        params: shortcut::ShortcutParams::SPECS,
+        build: |t, prefix| Ok(Box::new(Shortcut::new(shortcut::ShortcutParams::from_table(t, prefix)?))),
+    },
+    Entry {
+        id: "dubins",
+        description: "Dubins curves of the turning radius through the waypoints (3-D: Dubins airplane), written as a flyable tangent polygon",
+        citation: "Dubins 1957; Owen, Beard & McLain 2014; as in wpa2017",
+        params: dubins::DubinsParams::SPECS,
+        build: |t, prefix| Ok(Box::new(dubins::DubinsSmoother::new(dubins::DubinsParams::from_table(t, prefix)?))),
+    },
+];
 
 pub fn registry() -> Registry<BuildSmoother> {
     Registry::new("smoother", "smoother", "tidepath planners", SMOOTHERS)
