@@ -12,6 +12,7 @@ mod convergence;
 pub mod experiment;
 mod failure;
 mod figure;
+mod flown;
 mod log_axis;
 mod obstacle_look;
 mod plan_view;
@@ -39,11 +40,26 @@ pub struct PlotPath<'a> {
     /// The constraints this path violates (indices into `points`), marked on the plan view
     /// and the profile so a figure of an infeasible path shows where it fails.
     pub violations: &'a [Violation],
+    /// With a turning radius: the curve the vehicle flies along `points`. It is then drawn as
+    /// the path's line, with the waypoints as small markers on a thin dashed line.
+    pub flown: Option<FlownLine<'a>>,
+}
+
+/// The curve a vehicle with a turning radius flies along a path's waypoints (the fillet model,
+/// `tidepath::kinematics::fillet`), as the evaluation sampled it.
+#[derive(Clone, Copy, Debug)]
+pub struct FlownLine<'a> {
+    pub points: &'a [Vec3],
+    /// Arrival time at each point (s, scenario clock); may be empty.
+    pub times: &'a [f64],
+    /// The vehicle's turning radius (m): places the flown curve's pieces on the waypoints'
+    /// segments, where violations are reported.
+    pub radius: f64,
 }
 
 impl<'a> PlotPath<'a> {
     pub fn new(label: impl Into<String>, points: &'a [Vec3]) -> Self {
-        Self { label: label.into(), points, times: &[], violations: &[] }
+        Self { label: label.into(), points, times: &[], violations: &[], flown: None }
     }
 
     pub fn with_times(self, times: &'a [f64]) -> Self {
@@ -52,5 +68,11 @@ impl<'a> PlotPath<'a> {
 
     pub fn with_violations(self, violations: &'a [Violation]) -> Self {
         Self { violations, ..self }
+    }
+
+    /// The curve flown along the waypoints by a vehicle of turning radius `radius` (m), with
+    /// its times; a curve of fewer than two points is not drawn.
+    pub fn with_flown(self, points: &'a [Vec3], times: &'a [f64], radius: f64) -> Self {
+        Self { flown: Some(FlownLine { points, times, radius }), ..self }
     }
 }

@@ -284,6 +284,9 @@ pub enum Swatch {
     LineOverBand(RGBColor),
     /// A hollow diamond: a marked point of a curve.
     Diamond(RGBColor),
+    /// Waypoints a vehicle with a turning radius does not pass through: small hollow markers
+    /// on a thin dashed line.
+    Waypoints(RGBColor),
 }
 
 impl Swatch {
@@ -395,6 +398,16 @@ pub fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, entries: &
                 area.draw(&PathElement::new(vec![(x0, cy), (x1, cy)], line(*c, 2))).map_err(plot_err)?;
             }
             Swatch::Diamond(c) => draw_diamond(area, (xm, cy), *c)?,
+            Swatch::Waypoints(c) => {
+                for k in 0..3 {
+                    let xa = x0 + k * 9;
+                    area.draw(&PathElement::new(vec![(xa, cy), (xa + 5, cy)], line(*c, 1))).map_err(plot_err)?;
+                }
+                for x in [x0 + 3, x1 - 3] {
+                    area.draw(&Circle::new((x, cy), 3, fill(WHITE))).map_err(plot_err)?;
+                    area.draw(&Circle::new((x, cy), 3, line(*c, 1))).map_err(plot_err)?;
+                }
+            }
         }
         area.draw(&Text::new(e.label.clone(), (x1 + 6, cy), text.clone())).map_err(plot_err)?;
     }

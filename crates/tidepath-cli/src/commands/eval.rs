@@ -34,8 +34,9 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
     println!("{} — {} ({what})", scenario.name, args.plan.display());
     let mut total = 0.0;
     let several = judged.len() > 1;
-    for m in &judged {
+    for (k, m) in judged.iter().enumerate() {
         total += m.cost;
+        let radius = scenario.missions.get(k).map_or(scenario.vehicle.turn_radius, |v| v.vehicle.turn_radius);
         let indent = if several { "    " } else { "  " };
         if several {
             println!("  mission {} ({} waypoints):", m.name, m.waypoints.len());
@@ -58,6 +59,9 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
                 x.max_turn_deg,
                 x.max_pitch_deg
             );
+            if let Some(line) = radius.and_then(|r| super::plan::turns_line(x, r)) {
+                println!("{indent}turns: {line}");
+            }
         }
         if m.feasible {
             println!("{indent}verdict: feasible");

@@ -161,15 +161,20 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
     let cost = report.cost.map_or("none".to_string(), |c| format!("{c:.4}"));
     let to_points = |p: &[[f64; 3]]| p.iter().map(|q| tidepath::Vec3::from_array(*q)).collect::<Vec<_>>();
     let several = report.missions.len() > 1;
-    // (label, points, mission): the mission's times and violations describe its final path.
-    let mut owned: Vec<(String, Vec<tidepath::Vec3>, Option<&tidepath_io::MissionReport>)> = Vec::new();
-    for m in &report.missions {
+    // (label, points, mission, flown curve with its times and the vehicle's radius): the
+    // mission's times, violations and flown curve describe its final path.
+    type Drawn<'r> = (String, Vec<tidepath::Vec3>, Option<&'r tidepath_io::MissionReport>, Option<Flown<'r>>);
+    type Flown<'r> = (Vec<tidepath::Vec3>, &'r [f64], f64);
+    let mut owned: Vec<Drawn> = Vec::new();
+    for (k, m) in report.missions.iter().enumerate() {
         let name = if several { format!("{} {}", report.planner, m.name) } else { report.planner.clone() };
+        let radius = scenario.missions.get(k).map_or(scenario.vehicle.turn_radius, |x| x.vehicle.turn_radius);
+        let flown = m.flown.as_ref().zip(radius).map(|(f, r)| (f.vectors(), f.times.as_slice(), r));
         match &m.smoothed {
-            None => owned.push((name, to_points(&m.waypoints), Some(m))),
+            None => owned.push((name, to_points(&m.waypoints), Some(m), flown)),
             Some(s) => {
-                owned.push((format!("{name} (smoothed)"), to_points(s), Some(m)));
-                owned.push((format!("{name} (raw)"), to_points(&m.waypoints), None));
+                owned.push((format!("{name} (smoothed)"), to_points(s), Some(m), flown));
+                owned.push((format!("{name} (raw)"), to_points(&m.waypoints), None, None));
             }
         }
     }
@@ -181,9 +186,15 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
     fig.focus = report.missions.iter().filter_map(|m| m.focus.clone()).collect();
     fig.paths = owned
         .iter()
-        .map(|(label, pts, m)| match m {
-            Some(m) => PlotPath::new(label.clone(), pts).with_times(&m.times).with_violations(&m.violations),
-            None => PlotPath::new(label.clone(), pts),
+        .map(|(label, pts, m, flown)| {
+            let path = match m {
+                Some(m) => PlotPath::new(label.clone(), pts).with_times(&m.times).with_violations(&m.violations),
+                None => PlotPath::new(label.clone(), pts),
+            };
+            match flown {
+                Some((points, times, r)) => path.with_flown(points, times, *r),
+                None => path,
+            }
         })
         .collect();
     fig.reference = reference
@@ -205,7 +216,7 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
 pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
     println!("{} — {} (seed {}): {}: {}", scenario.name, r.planner, r.seed, r.status, r.reason);
     let several = r.missions.len() > 1;
-    for m in &r.missions {
+    for (k, m) in r.missions.iter().enumerate() {
         let indent = if several {
             println!("  mission {}: {}: {}", m.name, m.status, m.reason);
             "    "
@@ -245,6 +256,10 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
                 "{indent}min clearance  {clearance}; max turn {:.1} deg; max pitch {:.1} deg; collisions {}",
                 x.max_turn_deg, x.max_pitch_deg, x.collisions
             );
+            let radius = scenario.missions.get(k).map_or(scenario.vehicle.turn_radius, |v| v.vehicle.turn_radius);
+            if let Some(line) = radius.and_then(|r| turns_line(x, r)) {
+                println!("{indent}turns          {line}");
+            }
         }
         for v in m.violations.iter().take(8) {
             println!("{indent}violation      {}", v.message);
@@ -269,6 +284,21 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
         let what = if r.default_time_cap { "the default wall-time cap" } else { "the wall-time limit" };
         println!("  note           stopped by {what}: this result depends on the machine's speed");
     }
+}
+
+/// The turns flown by a vehicle of turning radius `r` (m), for summaries: "radius >= 30.0 m
+/// (curvature <= 0.0333 /m), vehicle 30 m", or "none: straight legs only, vehicle 30 m";
+/// `None` when the metrics do not say (a plan file written before turns were measured).
+pub fn turns_line(x: &tidepath::path::Metrics, r: f64) -> Option<String> {
+    let curvature = x.max_curvature_per_m?;
+    Some(match x.min_turn_radius_m {
+        None => format!("none: straight legs only, vehicle {r} m"),
+        Some(m) => {
+            let k = if curvature.is_finite() { format!("<= {curvature:.4} /m") } else { "unbounded".into() };
+            let tight = if m < r * (1.0 - 1e-9) { ", tighter than the vehicle can turn" } else { "" };
+            format!("radius >= {m:.1} m (curvature {k}), vehicle {r} m{tight}")
+        }
+    })
 }
 
 fn hms(s: f64) -> String {

@@ -81,7 +81,14 @@ impl FigureRenderer for ExperimentFigures {
             fig.paths = best
                 .iter()
                 .map(|(l, pts, judged)| match judged {
-                    Some(m) => PlotPath::new(l.clone(), pts).with_times(&m.times).with_violations(&m.violations),
+                    Some(m) => {
+                        let path = PlotPath::new(l.clone(), pts).with_times(&m.times).with_violations(&m.violations);
+                        // With a turning radius, the curve the vehicle flies is the line drawn.
+                        match (&m.flown, s.vehicle.turn_radius) {
+                            (Some(f), Some(r)) => path.with_flown(&f.points, &f.times, r),
+                            _ => path,
+                        }
+                    }
                     None => PlotPath::new(l.clone(), pts),
                 })
                 .collect();

@@ -274,6 +274,25 @@ fn draw_degree_ticks<DB: DrawingBackend>(
     Ok(())
 }
 
+/// A path's legend entries: its line with a waypoint dot; or, flown with a turning radius,
+/// the flown curve and the waypoints apart.
+pub(crate) fn path_entries(i: usize, p: &PlotPath) -> Vec<LegendEntry> {
+    let color = style::path_color(i);
+    if p.points.is_empty() {
+        return vec![LegendEntry::new(format!("{} (no path)", p.label), Swatch::Path(color))];
+    }
+    match p.flown.filter(|f| f.points.len() >= 2) {
+        None => vec![LegendEntry::new(&p.label, Swatch::Path(color))],
+        Some(f) => vec![
+            LegendEntry::new(
+                format!("{}: flown, turns of radius {} m", p.label, style::fmt_sig(f.radius)),
+                Swatch::Line { color: color.to_rgba(), width: 3 },
+            ),
+            LegendEntry::new(format!("{}: waypoints (corners cut)", p.label), Swatch::Waypoints(color)),
+        ],
+    }
+}
+
 /// Longest scale arrow in the legend (pixels): the longest current arrow is 0.8 of the arrow
 /// spacing, about 45 pixels on the widest map.
 const MAX_SCALE_ARROW_PX: i32 = 48;
@@ -286,14 +305,7 @@ fn legend_entries(
     halos: bool,
 ) -> Vec<LegendEntry> {
     let (world, paths) = (fig.world, fig.paths.as_slice());
-    let mut out: Vec<LegendEntry> = paths
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let label = if p.points.is_empty() { format!("{} (no path)", p.label) } else { p.label.clone() };
-            LegendEntry::new(label, Swatch::Path(style::path_color(i)))
-        })
-        .collect();
+    let mut out: Vec<LegendEntry> = paths.iter().enumerate().flat_map(|(i, p)| path_entries(i, p)).collect();
     if let Some(r) = &fig.reference {
         out.push(LegendEntry::new(&r.label, Swatch::DashedPath(style::REFERENCE)));
     }

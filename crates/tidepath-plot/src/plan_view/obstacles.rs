@@ -6,6 +6,7 @@ use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::super::flown::Drawn;
 use super::super::obstacle_look::{draw_circle_decor, ObstacleLook};
 use super::super::style::{self, plot_err};
 use super::super::{time_label, PlanFigure};
@@ -204,11 +205,13 @@ pub(super) fn draw_mark_labels<DB: DrawingBackend>(
             }
         }
     }
-    let Some(path) = fig.paths.iter().find(|p| p.times.len() == p.points.len() && p.points.len() >= 2) else {
+    // Where the vehicle is: on the flown curve when the path has one.
+    let drawn: Vec<Drawn> = fig.paths.iter().map(Drawn::of).collect();
+    let Some(path) = drawn.iter().find(|d| d.times.len() == d.line.len() && d.line.len() >= 2) else {
         return Ok(());
     };
     for &t in marks {
-        let Some(p) = position_at(path.points, path.times, t) else { continue };
+        let Some(p) = position_at(path.line, path.times, t) else { continue };
         let c = to_px(chart, p.x / u, p.y / u);
         style::draw_diamond(&px, c, style::OBSTACLE_EDGE)?;
         label(c, mark_text(fig, t), -16)?;

@@ -6,6 +6,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::super::failure;
+use super::super::flown::Drawn;
 use super::super::style::{self, plot_err, Marker};
 use super::super::{PlanFigure, PlotPath};
 use super::Chart;
@@ -124,14 +125,23 @@ pub(super) fn draw_reference<DB: DrawingBackend>(chart: &Chart<DB>, r: &PlotPath
     Ok(())
 }
 
-/// Bands under the violated segments, drawn before the paths so the path stays on top.
+/// Bands under the violated segments, drawn before the paths so the path stays on top. On a
+/// flown curve a segment's band covers the part the vehicle flies for it (its leg's straight
+/// part and the turn at its end).
 pub(super) fn draw_violated_segments<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPath], u: f64) -> Result<()> {
     let plot = chart.plotting_area();
     for p in paths {
+        let drawn = Drawn::of(p);
         for v in p.violations.iter().filter(|v| failure::on_segment(v.kind)) {
-            let (Some(a), Some(b)) = (p.points.get(v.index), p.points.get(v.index + 1)) else { continue };
-            if a.is_finite() && b.is_finite() {
-                let seg = vec![(a.x / u, a.y / u), (b.x / u, b.y / u)];
+            let part: Vec<Vec3> = match drawn.segment(v.index) {
+                Some(r) => drawn.line[r].to_vec(),
+                None => match (p.points.get(v.index), p.points.get(v.index + 1)) {
+                    (Some(a), Some(b)) => vec![*a, *b],
+                    _ => continue,
+                },
+            };
+            if part.len() >= 2 && part.iter().all(|q| q.is_finite()) {
+                let seg: Vec<(f64, f64)> = part.iter().map(|q| (q.x / u, q.y / u)).collect();
                 plot.draw(&PathElement::new(seg, style::line(style::WARN.mix(0.65), 12))).map_err(plot_err)?;
             }
         }
@@ -184,20 +194,36 @@ pub(super) fn draw_focus<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure
     Ok(())
 }
 
+/// Each path's line with a pale casing. A path without a flown curve has a dot at every
+/// waypoint; with one, the flown curve is the line and the waypoints are small hollow markers
+/// on a thin dashed line beneath it, so the corners the vehicle cuts show.
 pub(super) fn draw_paths<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPath], u: f64) -> Result<()> {
     let plot = chart.plotting_area();
+    let finite = |pts: &[Vec3]| -> Vec<(f64, f64)> {
+        pts.iter().filter(|q| q.x.is_finite() && q.y.is_finite()).map(|q| (q.x / u, q.y / u)).collect()
+    };
     for (i, p) in paths.iter().enumerate() {
         let color = style::path_color(i);
-        let pts: Vec<(f64, f64)> =
-            p.points.iter().filter(|q| q.x.is_finite() && q.y.is_finite()).map(|q| (q.x / u, q.y / u)).collect();
+        let drawn = Drawn::of(p);
+        let waypoints = finite(p.points);
+        if drawn.flown && waypoints.len() >= 2 {
+            plot.draw(&PathElement::new(waypoints.clone(), style::line(WHITE.mix(0.6), 3))).map_err(plot_err)?;
+            plot.draw(&DashedPathElement::new(waypoints.clone(), 5, 4, style::line(color, 1))).map_err(plot_err)?;
+        }
+        let pts = finite(drawn.line);
         if pts.len() >= 2 {
             // A pale casing keeps the line readable over dark water and dark contours.
             plot.draw(&PathElement::new(pts.clone(), style::line(WHITE.mix(0.75), 5))).map_err(plot_err)?;
             plot.draw(&PathElement::new(pts.clone(), style::line(color, 3))).map_err(plot_err)?;
         }
-        for &q in &pts {
-            plot.draw(&Circle::new(q, 4, style::fill(WHITE))).map_err(plot_err)?;
-            plot.draw(&Circle::new(q, 3, style::fill(color))).map_err(plot_err)?;
+        for &q in &waypoints {
+            if drawn.flown {
+                plot.draw(&Circle::new(q, 3, style::fill(WHITE))).map_err(plot_err)?;
+                plot.draw(&Circle::new(q, 3, style::line(color, 1))).map_err(plot_err)?;
+            } else {
+                plot.draw(&Circle::new(q, 4, style::fill(WHITE))).map_err(plot_err)?;
+                plot.draw(&Circle::new(q, 3, style::fill(color))).map_err(plot_err)?;
+            }
         }
     }
     Ok(())

@@ -3,12 +3,16 @@
 //!
 //! Distance is horizontal (along-track) so the seabed appears undistorted, as on a chart
 //! section; a steep climb then shows up as a steep line, which is what a reader looks for.
+//! A path flown with a turning radius is measured along its flown curve, which is the line
+//! drawn; its waypoints are small markers on a thin dashed line, each where the vehicle is
+//! nearest it (the middle of its turn).
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
 mod sections;
 
+use super::flown::Drawn;
 use super::style::{self, plot_err, LegendEntry, LengthUnit, Marker, Swatch};
 use super::{failure, PlanFigure, PlotPath};
 use tidepath::error::Result;
@@ -69,11 +73,13 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
     let unit = LengthUnit::for_extent((b.max.x - b.min.x).max(b.max.y - b.min.y));
     let u = unit.metres;
     let has_terrain = !matches!(world.terrain, Terrain::None);
-    let tracks: Vec<Vec<f64>> = paths.iter().map(|p| along_track(p.points)).collect();
+    // The line of each path (its flown curve when it has one) and the distance along it.
+    let drawn: Vec<Drawn> = paths.iter().map(Drawn::of).collect();
+    let tracks: Vec<Vec<f64>> = drawn.iter().map(|d| along_track(d.line)).collect();
     let longest = tracks.iter().filter_map(|t| t.last().copied()).fold(0.0, f64::max);
     let ds = (longest / SEABED_SAMPLES as f64).max(1e-6);
     let seabeds: Vec<Vec<(f64, f64)>> = if has_terrain {
-        paths.iter().zip(&tracks).map(|(p, t)| seabed_under(&world.terrain, p.points, t, ds)).collect()
+        drawn.iter().zip(&tracks).map(|(d, t)| seabed_under(&world.terrain, d.line, t, ds)).collect()
     } else {
         vec![Vec::new(); paths.len()]
     };
@@ -101,7 +107,7 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
     // Obstacles cut by the first path's vertical section, where the vehicle was when there.
     let first = &paths[0];
     let cut: Vec<Vec<(f64, f64)>> = {
-        let s = sections::samples(first.points, &tracks[0], first.times, fig.time, ds);
+        let s = sections::samples(drawn[0].line, &tracks[0], drawn[0].times, fig.time, ds);
         world.obstacles.iter().flat_map(|o| sections::obstacle_sections(o, &s, lo, hi)).collect()
     };
 
@@ -111,7 +117,7 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
             LegendEntry::new("goal", Swatch::Marker(Marker::Star, style::GOAL)),
         ]
     } else {
-        paths.iter().enumerate().map(|(i, p)| LegendEntry::new(&p.label, Swatch::Path(style::path_color(i)))).collect()
+        paths.iter().enumerate().flat_map(|(i, p)| super::plan_view::path_entries(i, p)).collect()
     };
     let first_seabed = seabeds.iter().position(|s| s.len() >= 2);
     if let Some(k) = first_seabed {
@@ -205,7 +211,12 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
         .bold_line_style(style::GRID)
         .x_labels(8)
         .y_labels(7)
-        .x_desc(format!("horizontal distance along path ({})", unit.name))
+        .x_desc(match (drawn.iter().any(|d| d.flown), drawn.iter().all(|d| d.flown || d.line.len() < 2)) {
+            (true, true) => format!("horizontal distance along the flown path ({})", unit.name),
+            // A smoothed plan's raw path beside its flown curve.
+            (true, false) => format!("horizontal distance along path, flown curve where drawn ({})", unit.name),
+            _ => format!("horizontal distance along path ({})", unit.name),
+        })
         .y_desc("z (m, 0 = sea surface)")
         .x_label_formatter(&ticks_x)
         .y_label_formatter(&ticks_y)
@@ -253,32 +264,55 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
             .draw_series(DashedLineSeries::new(vec![(0.0, 0.0), (x_max, 0.0)], 8, 5, style::line(style::SURFACE, 1)))
             .map_err(plot_err)?;
     }
-    let at = |track: &[f64], p: &PlotPath, i: usize| -> Option<(f64, f64)> {
-        let (s, q) = (track.get(i)?, p.points.get(i)?);
+    // (distance, z) of point j of a path's line, and of waypoint i where the vehicle is
+    // nearest it.
+    let on_line = |track: &[f64], d: &Drawn, j: usize| -> Option<(f64, f64)> {
+        let (s, q) = (track.get(j)?, d.line.get(j)?);
         (s.is_finite() && q.z.is_finite()).then(|| (s / u, q.z.clamp(lo, hi)))
     };
-    for (p, track) in paths.iter().zip(&tracks) {
+    let at_waypoint = |track: &[f64], d: &Drawn, p: &PlotPath, i: usize| -> Option<(f64, f64)> {
+        let (s, q) = (track.get(d.waypoint(i)?)?, p.points.get(i)?);
+        (s.is_finite() && q.z.is_finite()).then(|| (s / u, q.z.clamp(lo, hi)))
+    };
+    for ((p, d), track) in paths.iter().zip(&drawn).zip(&tracks) {
         for v in p.violations.iter().filter(|v| failure::on_segment(v.kind)) {
-            if let (Some(a), Some(b)) = (at(track, p, v.index), at(track, p, v.index + 1)) {
+            let Some(range) = d.segment(v.index) else { continue };
+            let band: Vec<(f64, f64)> = range.filter_map(|j| on_line(track, d, j)).collect();
+            if band.len() >= 2 {
                 chart
-                    .draw_series(std::iter::once(PathElement::new(vec![a, b], style::line(style::WARN.mix(0.65), 12))))
+                    .draw_series(std::iter::once(PathElement::new(band, style::line(style::WARN.mix(0.65), 12))))
                     .map_err(plot_err)?;
             }
         }
     }
     if !no_path {
-        for (i, (p, track)) in paths.iter().zip(&tracks).enumerate() {
+        for (i, ((p, d), track)) in paths.iter().zip(&drawn).zip(&tracks).enumerate() {
             let color = style::path_color(i);
-            let pts: Vec<(f64, f64)> = (0..p.points.len()).filter_map(|k| at(track, p, k)).collect();
-            if pts.len() >= 2 {
-                chart.draw_series(LineSeries::new(pts.clone(), style::line(color, 2))).map_err(plot_err)?;
+            let pts: Vec<(f64, f64)> = (0..d.line.len()).filter_map(|j| on_line(track, d, j)).collect();
+            if !d.flown {
+                if pts.len() >= 2 {
+                    chart.draw_series(LineSeries::new(pts.clone(), style::line(color, 2))).map_err(plot_err)?;
+                }
+                chart.draw_series(pts.iter().map(|&q| Circle::new(q, 3, style::fill(color)))).map_err(plot_err)?;
+                continue;
             }
-            chart.draw_series(pts.iter().map(|&q| Circle::new(q, 3, style::fill(color)))).map_err(plot_err)?;
+            // The waypoints on a thin dashed line beneath the flown curve, as on the plan view.
+            let marks: Vec<(f64, f64)> = (0..p.points.len()).filter_map(|k| at_waypoint(track, d, p, k)).collect();
+            if marks.len() >= 2 {
+                chart
+                    .draw_series(DashedLineSeries::new(marks.clone(), 5, 4, style::line(color, 1)))
+                    .map_err(plot_err)?;
+            }
+            if pts.len() >= 2 {
+                chart.draw_series(LineSeries::new(pts, style::line(color, 2))).map_err(plot_err)?;
+            }
+            chart.draw_series(marks.iter().map(|&q| Circle::new(q, 3, style::fill(WHITE)))).map_err(plot_err)?;
+            chart.draw_series(marks.iter().map(|&q| Circle::new(q, 3, style::line(color, 1)))).map_err(plot_err)?;
         }
     }
-    for (p, track) in paths.iter().zip(&tracks) {
+    for ((p, d), track) in paths.iter().zip(&drawn).zip(&tracks) {
         for v in p.violations.iter().filter(|v| !failure::on_segment(v.kind)) {
-            if let Some(q) = at(track, p, v.index) {
+            if let Some(q) = at_waypoint(track, d, p, v.index) {
                 chart.draw_series(std::iter::once(Circle::new(q, 9, style::line(style::WARN, 2)))).map_err(plot_err)?;
             }
         }
