@@ -225,3 +225,31 @@ fn a_radius_parameter_serves_a_vehicle_without_one() {
     let radius_vehicle = Mission::new("m", vehicle(Some(R)), p[0], p[4], 0.0);
     assert!(PathModel::new(&w, &radius_vehicle, &s).assess(&out, &mut Vec::new()).feasible());
 }
+
+#[test]
+fn a_level_detour_in_a_3d_world_goes_round_a_cylinder() {
+    let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -300.0), Vec3::new(1000.0, 1000.0, 0.0)));
+    w.obstacles.push(Obstacle::fixed(Shape::Cylinder {
+        center: Vec2::new(500.0, 500.0),
+        radius: 80.0,
+        z_min: -300.0,
+        z_max: 0.0,
+    }));
+    let p = vec![
+        Vec3::new(200.0, 500.0, -100.0),
+        Vec3::new(400.0, 500.0, -100.0),
+        Vec3::new(420.0, 620.0, -100.0),
+        Vec3::new(580.0, 620.0, -100.0),
+        Vec3::new(600.0, 500.0, -100.0),
+        Vec3::new(800.0, 500.0, -100.0),
+    ];
+    let mission = Mission::new("m", vehicle(Some(R)), p[0], p[5], 0.0);
+    let s = ModelSettings::default();
+    let m = PathModel::new(&w, &mission, &s);
+    assert!(!judge(&m, &p).0);
+    let out = smoother().smooth(&m, &cost(), &p, &Termination::default());
+    assert_eq!((out[0], *out.last().unwrap()), (p[0], p[5]));
+    assert!(judge(&m, &out).0, "{:?}", m.violations(&out));
+    assert_flyable(&out, R);
+    assert!(out.iter().all(|q| q.z == -100.0), "a level path stays level");
+}
