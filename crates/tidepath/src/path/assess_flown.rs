@@ -52,9 +52,10 @@ impl PathModel<'_> {
                     None => {
                         let d = m.b - m.a;
                         out.length += d.length();
-                        let h_len = d.truncate().length();
-                        if three_d && d.z != 0.0 {
-                            pitch(super::assess::slope(d, h_len), &mut out);
+                        if three_d {
+                            if let Some(s) = straight_slope(points, m) {
+                                pitch(s, &mut out);
+                            }
                         }
                         // The waypoint the leg ends at, until its turn (if any) says otherwise.
                         times[m.segment + 1] = t1;
@@ -146,16 +147,14 @@ impl PathModel<'_> {
             r,
             |m, _, _, _| {
                 if m.turn.is_none() && three_d {
-                    let d = m.b - m.a;
-                    let h_len = d.truncate().length();
-                    if d.z != 0.0 && super::assess::slope(d, h_len) > tan_pitch_limit {
+                    if let Some(s) = straight_slope(points, m).filter(|&s| s > tan_pitch_limit) {
                         issues.borrow_mut().push(Violation {
                             kind: ViolationKind::Pitch,
                             index: m.segment,
                             message: format!(
                                 "segment {} pitch {:.1} deg exceeds the limit {:.1} deg",
                                 m.segment,
-                                d.z.abs().atan2(h_len).to_degrees(),
+                                s.atan().to_degrees(),
                                 veh.max_pitch.to_degrees()
                             ),
                         });
@@ -183,6 +182,19 @@ impl PathModel<'_> {
         );
         out.extend(issues.into_inner());
     }
+}
+
+/// The slope (|dz| over horizontal length) flown on a leg's straight part: the leg's own, since
+/// the part lies on it. `None` when the part has no length (two fillets meet on the leg, as in
+/// a tangent polygon), where the ends' rounding would make up a slope nobody flies, or when
+/// the leg is level.
+fn straight_slope(points: &[Vec3], m: &super::FlownMotion) -> Option<f64> {
+    let leg = points[m.segment + 1] - points[m.segment];
+    let part = m.b - m.a;
+    if leg.z == 0.0 || part.length() <= 1e-9 * leg.length() {
+        return None;
+    }
+    Some(super::assess::slope(leg, leg.truncate().length()))
 }
 
 /// What makes two motion issues the same for reporting: their kind and obstacle.
