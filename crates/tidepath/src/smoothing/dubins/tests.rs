@@ -139,7 +139,6 @@ fn a_detour_round_a_disc_stays_clear_and_flyable() {
 }
 
 #[test]
-#[ignore = "blocked: PathModel::assess judges a straight part's pitch from its own ends, and between consecutive fillets of a climbing tangent polygon those are a rounding apart (a pitch of 27 to 90 degrees on a 1e-14 m piece); the leg's slope is the straight part's"]
 fn a_deep_dive_becomes_a_helix() {
     let w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -600.0), Vec3::new(400.0, 400.0, 0.0)));
     let v = Vehicle { max_pitch: 20f64.to_radians(), ..vehicle(Some(20.0)) };
