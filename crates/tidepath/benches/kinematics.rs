@@ -6,7 +6,7 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use tidepath::cost::{CostModel, GeneralCost, GeneralWeights};
+use tidepath::cost::{GeneralCost, GeneralWeights};
 use tidepath::geom::{Aabb, Vec2, Vec3};
 use tidepath::kinematics::dubins::Dubins;
 use tidepath::kinematics::dubins3::Dubins3;
@@ -80,7 +80,7 @@ fn bench(c: &mut Criterion) {
     let mut pose = |z: f64| {
         Pose::new(
             Vec3::new(rng.random_range(-200.0..200.0), rng.random_range(-200.0..200.0), z),
-            rng.random_range(-3.14..3.14),
+            rng.random_range(-std::f64::consts::PI..std::f64::consts::PI),
         )
     };
     let pairs: Vec<(Pose, Pose)> = (0..256).map(|_| (pose(0.0), pose(0.0))).collect();
