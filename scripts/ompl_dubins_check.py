@@ -39,8 +39,10 @@ def pairs_2d(ob, rng, n):
         th0, th1 = rng.uniform(-math.pi, math.pi), rng.uniform(-math.pi, math.pi)
         space = ob.DubinsStateSpace(r)
         a, b = space.allocState(), space.allocState()
-        a.setX(x0), a.setY(y0), a.setYaw(th0)
-        b.setX(x1), b.setY(y1), b.setYaw(th1)
+        for state, (x, y, th) in ((a, (x0, y0, th0)), (b, (x1, y1, th1))):
+            state.setX(x)
+            state.setY(y)
+            state.setYaw(th)
         length = space.distance(a, b)
         rows.append([2, r, 0.0, x0, y0, 0.0, th0, x1, y1, 0.0, th1, length, "PLANAR", 0.0, 0, r])
     return rows
