@@ -167,3 +167,23 @@ fn without_a_radius_the_figure_is_as_before() {
     // A dot per waypoint on the plan view and the profile, and one in each legend.
     assert_eq!(svg.matches(&dots).count(), 2 * r.missions[0].waypoints.len() + 2);
 }
+
+/// A flown curve is drawn over a path without one (a smoothed plan's raw path, listed after
+/// it), which would otherwise hide it; colours stay with the paths' order.
+#[test]
+fn a_flown_curve_is_drawn_over_other_paths() {
+    let (s, r) = planned(Some(300.0));
+    let m = &r.missions[0];
+    let (points, flown) = (m.points(), m.flown.as_ref().unwrap());
+    let curve = flown.vectors();
+    let mut fig = PlanFigure::of_scenario("headland", &s);
+    fig.paths =
+        vec![PlotPath::new("smoothed", &points).with_flown(&curve, &flown.times, 300.0), PlotPath::new("raw", &points)];
+    let svg = render_plan_figure(&fig).unwrap();
+    let magenta = r##"stroke="#C81E82" stroke-width="3" points=""##;
+    let orange = format!(r#"stroke="{ORANGE}" stroke-width="3" points=""#);
+    // The first line of each colour is the plan view's (the legend's swatches come later).
+    let (raw, curve_at) = (svg.find(magenta).unwrap(), svg.find(&orange).unwrap());
+    assert!(raw < curve_at, "the flown curve is drawn before the raw path");
+    assert!(has_text(&svg, "horizontal distance along path or flown curve (km)"));
+}

@@ -172,6 +172,11 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
         let flown = m.flown.as_ref().zip(radius).map(|(f, r)| (f.vectors(), f.times.as_slice(), r));
         match &m.smoothed {
             None => owned.push((name, to_points(&m.waypoints), Some(m), flown)),
+            // A smoother that gave the path back unchanged leaves nothing raw to show beside
+            // the flown curve.
+            Some(s) if flown.is_some() && *s == m.waypoints => {
+                owned.push((format!("{name} (smoothed)"), to_points(s), Some(m), flown));
+            }
             Some(s) => {
                 owned.push((format!("{name} (smoothed)"), to_points(s), Some(m), flown));
                 owned.push((format!("{name} (raw)"), to_points(&m.waypoints), None, None));

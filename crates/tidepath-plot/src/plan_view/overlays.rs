@@ -196,15 +196,15 @@ pub(super) fn draw_focus<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure
 
 /// Each path's line with a pale casing. A path without a flown curve has a dot at every
 /// waypoint; with one, the flown curve is the line and the waypoints are small hollow markers
-/// on a thin dashed line beneath it, so the corners the vehicle cuts show.
+/// on a thin dashed line beneath it, so the corners the vehicle cuts show. Flown curves are
+/// drawn over the other paths (a smoothed plan's raw path), which would otherwise hide them.
 pub(super) fn draw_paths<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPath], u: f64) -> Result<()> {
     let plot = chart.plotting_area();
     let finite = |pts: &[Vec3]| -> Vec<(f64, f64)> {
         pts.iter().filter(|q| q.x.is_finite() && q.y.is_finite()).map(|q| (q.x / u, q.y / u)).collect()
     };
-    for (i, p) in paths.iter().enumerate() {
+    for (i, p, drawn) in flown_last(paths) {
         let color = style::path_color(i);
-        let drawn = Drawn::of(p);
         let waypoints = finite(p.points);
         if drawn.flown && waypoints.len() >= 2 {
             plot.draw(&PathElement::new(waypoints.clone(), style::line(WHITE.mix(0.6), 3))).map_err(plot_err)?;
@@ -227,6 +227,14 @@ pub(super) fn draw_paths<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPat
         }
     }
     Ok(())
+}
+
+/// The paths with their index (their colour) and drawn line, flown curves last so they are
+/// drawn on top; otherwise in order.
+pub(super) fn flown_last<'p, 'a>(paths: &'p [PlotPath<'a>]) -> Vec<(usize, &'p PlotPath<'a>, Drawn<'a>)> {
+    let mut out: Vec<_> = paths.iter().enumerate().map(|(i, p)| (i, p, Drawn::of(p))).collect();
+    out.sort_by_key(|(_, _, d)| d.flown);
+    out
 }
 
 pub(super) fn draw_endpoints<DB: DrawingBackend>(

@@ -214,7 +214,7 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
         .x_desc(match (drawn.iter().any(|d| d.flown), drawn.iter().all(|d| d.flown || d.line.len() < 2)) {
             (true, true) => format!("horizontal distance along the flown path ({})", unit.name),
             // A smoothed plan's raw path beside its flown curve.
-            (true, false) => format!("horizontal distance along path, flown curve where drawn ({})", unit.name),
+            (true, false) => format!("horizontal distance along path or flown curve ({})", unit.name),
             _ => format!("horizontal distance along path ({})", unit.name),
         })
         .y_desc("z (m, 0 = sea surface)")
@@ -286,7 +286,11 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
         }
     }
     if !no_path {
-        for (i, ((p, d), track)) in paths.iter().zip(&drawn).zip(&tracks).enumerate() {
+        // Flown curves over the other paths, as on the plan view.
+        let mut order: Vec<usize> = (0..paths.len()).collect();
+        order.sort_by_key(|&i| drawn[i].flown);
+        for i in order {
+            let (p, d, track) = (&paths[i], &drawn[i], &tracks[i]);
             let color = style::path_color(i);
             let pts: Vec<(f64, f64)> = (0..d.line.len()).filter_map(|j| on_line(track, d, j)).collect();
             if !d.flown {
