@@ -5,6 +5,9 @@
 //! cost = w_length L / L0 + w_time T / T0 + w_collision N_violations
 //!      + w_turn (N_turn + sum turn excess in rad) + w_pitch (N_pitch + sum pitch excess in rad)
 //!
+//! With a turning radius, N_turn also counts the turns whose fillet does not fit in their legs,
+//! and the turn excess adds each one's shortfall 1 - (radius flown / the vehicle's radius).
+//!
 //! L0 is the straight start-goal distance and T0 = L0 / cruise speed. N_violations counts
 //! collisions (segment-object pairs within the safety distance), waypoints out of the domain or
 //! depth band, and pieces where the current stops the vehicle. Penalties are a count plus the
@@ -82,7 +85,9 @@ impl CostModel for GeneralCost {
         terms[1] = w.time * a.travel_time / t0;
         terms[2] = w.collision
             * (a.collisions + a.bounds_violations + a.endpoint_violations + a.current_blocked + a.current_gaps) as f64;
-        terms[3] = w.turn * (a.turn_violations as f64 + a.turn_excess);
+        // A turn whose fillet does not fit (a vehicle with a turning radius) is a turn
+        // violation too: one each, plus its shortfall 1 - radius flown / radius, in [0, 1].
+        terms[3] = w.turn * ((a.turn_violations + a.radius_violations) as f64 + a.turn_excess + a.radius_excess);
         terms[4] = w.pitch * (a.pitch_violations as f64 + a.pitch_excess);
         terms[..5].iter().sum()
     }
@@ -118,5 +123,36 @@ impl CostModel for GeneralCost {
         let (l0, tt0) = Self::references(model);
         let w = &self.weights;
         Some((w.length * a.distance(b) / l0 + w.time * (m.arrival - t0) / tt0, m.arrival))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::Aabb;
+    use crate::mission::Mission;
+    use crate::path::ModelSettings;
+    use crate::vehicle::Vehicle;
+    use crate::world::World;
+
+    /// A turn too sharp for the radius costs the turn weight times (1 + its shortfall); the
+    /// same path without a radius pays nothing for it.
+    #[test]
+    fn a_turn_that_does_not_fit_is_a_turn_violation_with_its_shortfall() {
+        let w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -10.0), Vec3::new(300.0, 300.0, 0.0)));
+        let p = [Vec3::new(0.0, 0.0, -5.0), Vec3::new(100.0, 0.0, -5.0), Vec3::new(100.0, 100.0, -5.0)];
+        let s = ModelSettings::default();
+        let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
+        let turn_term = |radius| {
+            let v = Vehicle { turn_radius: radius, max_turn: std::f64::consts::PI, ..Vehicle::default() };
+            let mission = Mission::new("m", v, p[0], p[2], 0.0);
+            let model = PathModel::new(&w, &mission, &s);
+            let (_, terms) = cost.breakdown(&model, &p);
+            terms.iter().find(|t| t.0 == "turn").unwrap().1
+        };
+        assert_eq!(turn_term(None), 0.0);
+        assert_eq!(turn_term(Some(100.0)), 0.0, "a 90 degree turn at r = 100 fits 100 m legs");
+        // r = 200 needs 200 m of each leg; 100 m allow r = 100: shortfall 1/2.
+        assert!((turn_term(Some(200.0)) - 1.5).abs() < 1e-12);
     }
 }
