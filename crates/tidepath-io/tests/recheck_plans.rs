@@ -127,8 +127,9 @@ fn the_flown_rechecker_finds_what_it_is_shown() {
     let model = PathModel::new(&world, &mission, &settings);
     let mut times = Vec::new();
     assert!(model.assess(&path, &mut times).feasible());
-    let n = common::flown::recheck_flown(&world, &vehicle, &settings, &path, &times, 40.0).unwrap();
-    assert!(n > 500, "{n} samples");
+    let c = common::flown::recheck_flown(&world, &vehicle, &settings, &path, &times, 40.0).unwrap();
+    assert!(c.samples > 500, "{} samples", c.samples);
+    assert!((c.min_circumradius - 40.0).abs() < 1e-6, "{c:?}");
     // Halfway round the turn, at the time the vehicle is there.
     let mid = Vec3::new(
         160.0 + 40.0 * (std::f64::consts::FRAC_PI_4).sin(),

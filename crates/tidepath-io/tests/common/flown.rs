@@ -5,7 +5,9 @@
 //! own clock (each turn timed on the documented chords, each chord by the documented crab
 //! rule, its time scaled by the arc's length over the chord's) and checks clearance there, and
 //! measures the curvature of the sampled curve itself: the circle through every three
-//! consecutive samples must have a radius of at least the vehicle's.
+//! consecutive samples must have a radius of at least the vehicle's (or of the tightest turn
+//! the documented slack lets pass); the smallest such radius is returned, for tests that
+//! require the vehicle's radius exactly.
 
 use super::{clock, distance};
 use tidepath::geom::Vec3;
@@ -68,7 +70,7 @@ fn demand(p: &[Vec3], i: usize, r: f64) -> f64 {
 }
 
 /// The turns of the fillet model, one per interior waypoint (`None`: no turn flown there).
-fn turns(p: &[Vec3], r: f64) -> Result<Vec<Option<Turn>>, String> {
+fn turns(p: &[Vec3], r: f64, tolerance: f64) -> Result<Vec<Option<Turn>>, String> {
     let mut out = vec![None; p.len()];
     for i in 1..p.len().saturating_sub(1) {
         let Some((theta, side)) = turn_at(p, i, r) else {
@@ -85,7 +87,11 @@ fn turns(p: &[Vec3], r: f64) -> Result<Vec<Option<Turn>>, String> {
         let (l_in, l_out) = (hlen(p[i - 1], p[i]), hlen(p[i], p[i + 1]));
         let t = d.min(share(l_in, demand(p, i - 1, r))).min(share(l_out, demand(p, i + 1, r)));
         let radius = t / (theta / 2.0).tan();
-        if radius < r * (1.0 - 1e-9) {
+        // Documented slack: a turn under the radius passes when the vehicle's own fillet would
+        // lie within the arc tolerance of it (the two arcs' midpoints are (r - radius)
+        // (sec(theta/2) - 1) apart).
+        let stray = (r - radius) * (1.0 / (theta / 2.0).cos() - 1.0);
+        if radius < r * (1.0 - 1e-9) && stray > tolerance {
             return Err(format!(
                 "the turn at waypoint {i} is flown at radius {radius:.3} m, under the vehicle's {r} m"
             ));
@@ -100,7 +106,8 @@ fn turns(p: &[Vec3], r: f64) -> Result<Vec<Option<Turn>>, String> {
 }
 
 /// Re-checks a path flown with turning radius `r`; `times` are the plan's times at the
-/// waypoints (halfway round each turn). Returns the number of samples.
+/// waypoints (halfway round each turn). Returns the number of samples and the curvature
+/// measured.
 pub fn recheck_flown(
     world: &World,
     vehicle: &Vehicle,
@@ -108,11 +115,13 @@ pub fn recheck_flown(
     path: &[Vec3],
     times: &[f64],
     r: f64,
-) -> Result<usize, String> {
+) -> Result<Rechecked, String> {
     if path.len() != times.len() {
         return Err(format!("{} points but {} times", path.len(), times.len()));
     }
-    let turns = turns(path, r)?;
+    let turns = turns(path, r, settings.arc_tolerance)?;
+    // The tightest radius any turn flies: the curvature samples may not be tighter.
+    let tightest = turns.iter().flatten().map(|t| t.radius).fold(r, f64::min);
     let safety = vehicle.safety_distance;
     // Samples of the flown curve in order: (point, time, on a turn).
     let mut samples: Vec<(Vec3, f64, bool)> = Vec::new();
@@ -200,6 +209,7 @@ pub fn recheck_flown(
         }
         v
     });
+    let mut min_circumradius = f64::INFINITY;
     for w in pts.windows(3) {
         let (a, b, c) = (w[0], w[1], w[2]);
         let (ab, bc, ca) = (hlen(a, b), hlen(b, c), hlen(c, a));
@@ -208,9 +218,19 @@ pub fn recheck_flown(
             continue;
         }
         let circumradius = ab * bc * ca / (2.0 * cross);
-        if circumradius < r * (1.0 - 1e-6) {
-            return Err(format!("curvature 1/{circumradius:.3} m at {b:?}, over the vehicle's 1/{r} m"));
+        min_circumradius = min_circumradius.min(circumradius);
+        if circumradius < tightest * (1.0 - 1e-6) {
+            return Err(format!("curvature 1/{circumradius:.3} m at {b:?}, over the turns' 1/{tightest} m"));
         }
     }
-    Ok(samples.len())
+    Ok(Rechecked { samples: samples.len(), min_circumradius })
+}
+
+/// What the re-checker measured.
+#[derive(Clone, Copy, Debug)]
+pub struct Rechecked {
+    pub samples: usize,
+    /// The smallest radius of a circle through three consecutive samples (+inf when straight):
+    /// the flown curve's largest curvature is its inverse.
+    pub min_circumradius: f64,
 }

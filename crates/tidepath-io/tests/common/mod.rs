@@ -154,7 +154,8 @@ pub fn recheck_plan(s: &Scenario, r: &PlanReport) -> Result<usize, String> {
         }
         let path = m.points();
         let checked = match mission.vehicle.turn_radius {
-            Some(radius) => flown::recheck_flown(&s.world, &mission.vehicle, &s.settings, &path, &m.times, radius),
+            Some(radius) => flown::recheck_flown(&s.world, &mission.vehicle, &s.settings, &path, &m.times, radius)
+                .map(|c| c.samples),
             None => recheck_path(&s.world, &mission.vehicle, &s.settings, &path, &m.times),
         };
         samples +=

@@ -47,6 +47,23 @@ pub struct Corner {
     pub fits: bool,
 }
 
+impl Corner {
+    /// How far (m) the vehicle's own fillet (radius `r`) would lie from the one flown when the
+    /// turn does not fit: (r - radius) (sec(turn/2) - 1), the distance between the two arcs'
+    /// midpoints (both are tangent to the same legs). 0 when the turn fits. The evaluation
+    /// lets a turn pass when this is within its arc tolerance: then the vehicle flying its own
+    /// radius stays as close to the judged curve as the judged chords do to their arcs (a
+    /// turn of a few degrees on legs of a metre, as a route rounded to centimetres in a file
+    /// makes them, is no longer a violation; any real corner still is).
+    pub fn deviation(&self, r: f64) -> f64 {
+        if self.fits {
+            return 0.0;
+        }
+        let sec = 1.0 / (self.turn * 0.5).cos();
+        ((r - self.radius).max(0.0) * (sec - 1.0)).max(0.0)
+    }
+}
+
 /// One piece of the flown curve, in flight order.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum FlownPiece {
@@ -141,11 +158,7 @@ fn turn_between(u: Vec2, v: Vec2) -> (f64, i8) {
     if turn <= NO_TURN {
         return (0.0, 0);
     }
-    let side = if s >= 0.0 {
-        1
-    } else {
-        -1
-    };
+    let side = if s >= 0.0 { 1 } else { -1 };
     (turn, side)
 }
 
@@ -225,15 +238,7 @@ fn arc_at(points: &[Vec3], i: usize, c: Corner) -> Arc {
     let normal = Vec2::new(-u.y, u.x) * f64::from(c.side);
     let center = a.truncate() + normal * c.radius;
     let ra = a.truncate() - center;
-    Arc {
-        waypoint: i,
-        corner: c,
-        center,
-        start_angle: ra.y.atan2(ra.x),
-        sweep: f64::from(c.side) * c.turn,
-        a,
-        b,
-    }
+    Arc { waypoint: i, corner: c, center, start_angle: ra.y.atan2(ra.x), sweep: f64::from(c.side) * c.turn, a, b }
 }
 
 /// Calls `f` with every piece of the curve flown along `points` with turning radius `r`, in
@@ -263,7 +268,13 @@ pub fn for_each_piece(points: &[Vec3], r: f64, mut f: impl FnMut(FlownPiece)) {
 pub fn corners(points: &[Vec3], r: f64) -> Vec<Corner> {
     let n = points.len();
     (0..n)
-        .map(|i| if i == 0 || i + 1 >= n { Corner { radius: f64::INFINITY, fits: true, ..Corner::default() } } else { corner(points, i, r) })
+        .map(|i| {
+            if i == 0 || i + 1 >= n {
+                Corner { radius: f64::INFINITY, fits: true, ..Corner::default() }
+            } else {
+                corner(points, i, r)
+            }
+        })
         .collect()
 }
 

@@ -14,6 +14,7 @@ impl PathModel<'_> {
     /// object) pairs, a turn being several chord motions.
     pub(super) fn assess_flown(&self, points: &[Vec3], times: &mut Vec<f64>, r: f64) -> Assessment {
         let mut out = Assessment::default();
+        let tol = self.settings.arc_tolerance;
         self.waypoint_checks(points, &mut out);
         self.waypoint_turns(points, &mut out);
         let veh = self.vehicle;
@@ -29,7 +30,7 @@ impl PathModel<'_> {
         };
         fillet::for_each_piece(points, r, |piece| {
             if let FlownPiece::Arc(arc) = piece {
-                if !arc.corner.fits {
+                if too_tight(&arc.corner, r, tol) {
                     out.radius_violations += 1;
                     out.radius_excess += (1.0 - arc.corner.radius / r).clamp(0.0, 1.0);
                 }
@@ -105,6 +106,7 @@ impl PathModel<'_> {
     /// pitch, in flight order. An issue on a turn's chords is reported once per turn.
     pub(super) fn flown_violations(&self, points: &[Vec3], r: f64, out: &mut Vec<Violation>) {
         self.turn_angle_violations(points, &mut |kind, index, message| out.push(Violation { kind, index, message }));
+        let tol = self.settings.arc_tolerance;
         let veh = self.vehicle;
         let three_d = self.world.dims == Dims::Three;
         let tan_pitch_limit = veh.max_pitch.tan();
@@ -112,8 +114,9 @@ impl PathModel<'_> {
         fillet::for_each_piece(points, r, |piece| {
             let FlownPiece::Arc(arc) = piece else { return };
             let (i, c) = (arc.waypoint, arc.corner);
-            if !c.fits {
-                let (l_in, l_out) = ((points[i] - points[i - 1]).truncate().length(), (points[i + 1] - points[i]).truncate().length());
+            if too_tight(&c, r, tol) {
+                let (l_in, l_out) =
+                    ((points[i] - points[i - 1]).truncate().length(), (points[i + 1] - points[i]).truncate().length());
                 let need = r * (c.turn * 0.5).tan();
                 push(
                     ViolationKind::Turn,
@@ -182,6 +185,12 @@ impl PathModel<'_> {
         );
         out.extend(issues.into_inner());
     }
+}
+
+/// Whether a turn is a violation: it does not fit, and the vehicle flying its own radius there
+/// would stray from the judged curve by more than the arc tolerance ([`fillet::Corner::deviation`]).
+fn too_tight(c: &fillet::Corner, r: f64, tol: f64) -> bool {
+    !c.fits && c.deviation(r) > tol
 }
 
 /// The slope (|dz| over horizontal length) flown on a leg's straight part: the leg's own, since

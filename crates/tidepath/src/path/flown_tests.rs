@@ -34,7 +34,8 @@ fn judge(w: &World, radius: Option<f64>, points: &[Vec3]) -> (Assessment, Vec<f6
     (a, times, m.metrics(points), m.violations(points))
 }
 
-const RIGHT_ANGLE: [Vec3; 3] = [Vec3::new(10.0, 10.0, -50.0), Vec3::new(110.0, 10.0, -50.0), Vec3::new(110.0, 110.0, -50.0)];
+const RIGHT_ANGLE: [Vec3; 3] =
+    [Vec3::new(10.0, 10.0, -50.0), Vec3::new(110.0, 10.0, -50.0), Vec3::new(110.0, 110.0, -50.0)];
 
 #[test]
 fn a_right_angle_is_flown_round_a_quarter_circle() {
@@ -132,4 +133,25 @@ fn assess_and_violations_agree_on_random_paths() {
         assert_eq!(times.len(), pts.len());
         assert!(times.windows(2).all(|t| t[1] >= t[0]), "{times:?}");
     }
+}
+
+#[test]
+fn a_turn_a_hair_too_tight_passes_only_within_the_arc_tolerance() {
+    // A 4 degree turn at r = 40 needs 1.397 m of each leg; legs of 2 x 1.2 m allow 34.4 m. The
+    // vehicle's own 40 m fillet would lie (40 - 34.4)(sec 2 deg - 1) = 3.4 mm from it: within
+    // the 5 cm tolerance, so it passes; the metrics still say the radius flown.
+    let h = 4f64.to_radians();
+    let p = [
+        Vec3::new(10.0, 10.0, -50.0),
+        Vec3::new(11.2, 10.0, -50.0),
+        Vec3::new(11.2 + 1.2 * h.cos(), 10.0 + 1.2 * h.sin(), -50.0),
+    ];
+    let (a, _, m, v) = judge(&world(), Some(40.0), &p);
+    assert!(a.feasible(), "{v:?}");
+    let rho = 1.2 / (h / 2.0).tan();
+    assert!((m.min_turn_radius_m.unwrap() - rho).abs() < 1e-9 && rho < 40.0, "{m:?}");
+    // A right angle at 39 m instead of 40 would stray 1 (sqrt 2 - 1) = 0.41 m: a violation.
+    let q = [Vec3::new(10.0, 10.0, -50.0), Vec3::new(49.0, 10.0, -50.0), Vec3::new(49.0, 49.0, -50.0)];
+    let (a, ..) = judge(&world(), Some(40.0), &q);
+    assert_eq!(a.radius_violations, 1);
 }

@@ -197,7 +197,10 @@ pub(super) fn motion_issue_text(
         }
         MotionIssue::Current { pieces } => (
             ViolationKind::Current,
-            format!("{place}: the current stops a {} m/s vehicle from holding the track on {pieces} piece(s)", veh.speed),
+            format!(
+                "{place}: the current stops a {} m/s vehicle from holding the track on {pieces} piece(s)",
+                veh.speed
+            ),
         ),
         MotionIssue::NoCurrentData => {
             let at = world.current.first_gap_on(a, b).map(|p| world.place(p.x, p.y)).unwrap_or_default();
