@@ -72,12 +72,22 @@ fn a_straight_through_waypoint_is_no_turn() {
 
 #[test]
 fn a_turn_next_to_a_vertical_leg_has_no_room() {
-    let p = [Vec3::new(0.0, 0.0, -10.0), Vec3::new(50.0, 0.0, -10.0), Vec3::new(50.0, 0.0, -20.0), Vec3::new(50.0, 50.0, -20.0)];
+    let p = [
+        Vec3::new(0.0, 0.0, -10.0),
+        Vec3::new(50.0, 0.0, -10.0),
+        Vec3::new(50.0, 0.0, -20.0),
+        Vec3::new(50.0, 50.0, -20.0),
+    ];
     let (c1, c2) = (corner(&p, 1, 5.0), corner(&p, 2, 5.0));
     assert!(!c1.fits && c1.radius == 0.0 && (c1.turn - FRAC_PI_2).abs() < 1e-15);
     assert!(!c2.fits && c2.radius == 0.0);
     // A vertical leg between legs of one heading turns nothing.
-    let q = [Vec3::new(0.0, 0.0, -10.0), Vec3::new(50.0, 0.0, -10.0), Vec3::new(50.0, 0.0, -20.0), Vec3::new(90.0, 0.0, -20.0)];
+    let q = [
+        Vec3::new(0.0, 0.0, -10.0),
+        Vec3::new(50.0, 0.0, -10.0),
+        Vec3::new(50.0, 0.0, -20.0),
+        Vec3::new(90.0, 0.0, -20.0),
+    ];
     assert!(corner(&q, 1, 5.0).fits && corner(&q, 2, 5.0).fits);
 }
 
