@@ -10,6 +10,7 @@
 pub mod capabilities;
 pub mod grid_search;
 pub mod hybrid;
+pub mod hybrid_astar;
 mod objective;
 mod optimizer_planner;
 pub mod raster_search;

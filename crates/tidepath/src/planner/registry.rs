@@ -140,6 +140,26 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
             Ok(Box::new(Hybrid::new(HybridParams::from_table(&s.params, &s.prefix)?)?))
         }),
     },
+    Entry {
+        id: "hybrid-astar",
+        description: "Hybrid-A* over arcs of the vehicle's turning radius and straights, with analytic Dubins shots to the goal; flyable paths priced by the scenario's cost",
+        citation: "Dolgov, Thrun, Montemerlo & Diebel 2010; Nav2 Smac Hybrid-A*",
+        params: super::hybrid_astar::HybridAstarParams::SPECS,
+        build: BuildPlanner::direct(
+            Capabilities {
+                dimensions: Dimensions::Both,
+                fleets: Fleets::OneAfterAnother,
+                warm_start: false,
+                counts: &[Unit::Expansions],
+                optimal: None,
+                randomised: false,
+            },
+            |s| {
+                let p = super::hybrid_astar::HybridAstarParams::from_table(&s.params, &s.prefix)?;
+                Ok(Box::new(super::hybrid_astar::HybridAstar::new(p)))
+            },
+        ),
+    },
 ];
 
 /// The built-in planners. Extend with [`Registry::with`] to plan with your own.
