@@ -146,10 +146,15 @@ pub struct Reference {
     pub waypoints: Vec<[f64; 3]>,
 }
 
-/// The reference planner for a scenario when none is named: the exact visibility graph where
-/// it applies (2-D discs and boxes), else Theta* on the world's raster (any-angle, never longer
-/// than A* on the same raster).
+/// The reference planner for a scenario when none is named: for vehicles with a turning
+/// radius, Hybrid-A* (its paths are flyable; polyline references are not, and the vehicle
+/// flies them on another curve); else the exact visibility graph where it applies (2-D discs
+/// and boxes), else Theta* on the world's raster (any-angle, never longer than A* on the same
+/// raster).
 pub fn default_reference(scenario: &Scenario) -> &'static str {
+    if scenario.missions.iter().any(|m| m.vehicle.turn_radius.is_some()) {
+        return "hybrid-astar";
+    }
     let cost = scenario.cost_model();
     let applies = cost.as_ref().is_ok_and(|c| {
         let p = scenario.problem(c.as_ref());

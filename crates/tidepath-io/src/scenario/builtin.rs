@@ -28,6 +28,13 @@ pub const BUILTIN: &[Entry<&str>] = &[
         build: include_str!("../../scenarios/salish-strait.toml"),
     },
     Entry {
+        id: "salish-strait-turns",
+        description: "salish-strait by an AUV with a 40 m turning radius: every turn is flown as an arc",
+        citation: "elevation: matplotlib's topobathy sample (Strait of Juan de Fuca)",
+        params: &[],
+        build: include_str!("../../scenarios/salish-strait-turns.toml"),
+    },
+    Entry {
         id: "salish-forecast",
         description:
             "2-D surface transit up the Strait of Juan de Fuca through a tidal current forecast read from NetCDF",
@@ -69,7 +76,11 @@ mod tests {
             let s = Scenario::from_toml(e.build, &format!("builtin:{}", e.id))
                 .unwrap_or_else(|err| panic!("{}: {err}", e.id));
             assert!(s.warnings.is_empty(), "{}: {:?}", e.id, s.warnings);
-            let req = PlanRequest { iterations: Some(3), ..PlanRequest::default() };
+            // A short run where the default planner counts iterations; a search runs whole.
+            let counts_iterations = tidepath::planner::registry()
+                .find(&s.planner.id)
+                .is_some_and(|p| p.build.caps.counts_unit(tidepath::planner::Unit::Iterations));
+            let req = PlanRequest { iterations: counts_iterations.then_some(3), ..PlanRequest::default() };
             let r = s.plan(&req, &mut |_| {}).unwrap_or_else(|err| panic!("{}: {err}", e.id));
             let w = &r.missions[0].waypoints;
             assert!(w.len() >= 2, "{}", e.id);

@@ -17,6 +17,9 @@ use tidepath::world::World;
 
 /// Spacing of the curvature and clearance samples (m) along the flown curve.
 const SPACING: f64 = 0.5;
+/// Samples closer than this (m) are skipped for the curvature check: a circle through points
+/// micrometres apart far from the origin measures rounding, not the curve.
+const MIN_CURVATURE_SPACING: f64 = 0.1;
 /// Rounding allowance (m) on clearances.
 const TOL: f64 = 1e-6;
 
@@ -204,7 +207,7 @@ pub fn recheck_flown(
     }
     // Curvature of the curve itself: the circle through three consecutive distinct samples.
     let pts: Vec<Vec3> = samples.iter().map(|s| s.0).fold(Vec::new(), |mut v, p| {
-        if v.last().is_none_or(|q: &Vec3| hlen(*q, p) > 1e-6) {
+        if v.last().is_none_or(|q: &Vec3| hlen(*q, p) > MIN_CURVATURE_SPACING) {
             v.push(p);
         }
         v
