@@ -8,15 +8,18 @@
 //! [`crate::cost::CostModel::motion_cost`] at the vehicle's running clock, and every point
 //! must be in the domain and depth band (the evaluation's waypoint check).
 //!
-//! Curves of at most three pieces (turns of radius r and straights: Dubins words, a turn then
-//! a straight) become tangent polygons whose turns are level, the height changing evenly along
-//! their straight parts within the pitch limit (why: [`super::lattice`]).
+//! Curves of a few pieces (turns of radius r and straights: a turn then a straight, Dubins
+//! words, and in 3-D the Dubins-airplane curves of [`crate::kinematics::dubins3`], which add
+//! a turn, or whole helical turns, before the Dubins word when the climb is too steep for it)
+//! become tangent polygons, the height changing evenly along their whole length within the
+//! pitch limit.
 
 use super::heuristic::turn_then_straight;
 use super::lattice::PITCH_MARGIN;
 use super::search::{Search, POLL_EVERY};
 use crate::geom::Vec3;
 use crate::kinematics::dubins::Dubins;
+use crate::kinematics::dubins3::Dubins3;
 use crate::kinematics::fillet::{self, FlownPiece};
 use crate::kinematics::{Pose, TangentPolygon};
 use crate::termination::{StopReason, Termination};
@@ -30,16 +33,28 @@ pub enum Check {
     Interrupted(StopReason),
 }
 
-/// Turns (+1 left, -1 right) and straights (0) of the given lengths (m).
+/// Turns (+1 left, -1 right) and straights (0) of the given lengths (m), in order.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Curve {
-    pub turns: [i8; 3],
-    pub lengths: [f64; 3],
+    pub turns: [i8; 4],
+    pub lengths: [f64; 4],
 }
 
 impl Curve {
+    /// A planar Dubins curve.
     pub fn of_dubins(d: &Dubins) -> Self {
-        Self { turns: d.word.turns(), lengths: d.lengths }
+        let [a, b, c] = d.word.turns();
+        let [x, y, z] = d.lengths;
+        Self { turns: [a, b, c, 0], lengths: [x, y, z, 0.0] }
+    }
+
+    /// A Dubins-airplane curve: its turn before the Dubins word (whole turns included), then
+    /// the word.
+    pub fn of_dubins3(d: &Dubins3) -> Self {
+        let [a, b, c] = d.horizontal.word.turns();
+        let [x, y, z] = d.horizontal.lengths;
+        let side = if d.pre_turn >= 0.0 { 1 } else { -1 };
+        Self { turns: [side, a, b, c], lengths: [d.radius * d.pre_turn.abs(), x, y, z] }
     }
 
     /// The shorter turn-then-straight curve from `from` to the point `to` (any final heading).
@@ -48,15 +63,16 @@ impl Curve {
             .into_iter()
             .filter_map(|side| turn_then_straight(from, to.truncate(), r, side))
             .min_by(|a, b| a.length(r).total_cmp(&b.length(r)))
-            .map(|ts| Self { turns: [ts.side, 0, 0], lengths: [r * ts.sweep, ts.straight, 0.0] })
+            .map(|ts| Self::turn_then_straight(ts.side, r * ts.sweep, ts.straight))
     }
 
+    fn turn_then_straight(side: i8, arc: f64, straight: f64) -> Self {
+        Self { turns: [side, 0, 0, 0], lengths: [arc, straight, 0.0, 0.0] }
+    }
+
+    /// Horizontal length (m).
     pub fn length(&self) -> f64 {
         self.lengths.iter().sum()
-    }
-
-    fn straight(&self) -> f64 {
-        self.turns.iter().zip(&self.lengths).filter(|(t, _)| **t == 0).map(|(_, l)| l).sum()
     }
 
     /// The heading at its end, from `from`'s.
@@ -65,23 +81,30 @@ impl Curve {
     }
 }
 
+/// The pitch Dubins-airplane curves are planned with: a little under the limit, so that the
+/// curves' own rounding stays within [`PITCH_MARGIN`] of it.
+fn planning_pitch(max_pitch: f64) -> f64 {
+    (max_pitch.tan() * (1.0 - 2.0 * PITCH_MARGIN)).atan()
+}
+
 impl Search<'_> {
-    /// The tangent polygon of `curve` from `from` ending exactly at `to` (whose height it
-    /// reaches on its straight parts), or `None` when that climb is steeper than the pitch limit.
+    /// The tangent polygon of `curve` from `from` ending exactly at `to`, whose height it
+    /// reaches evenly along its length; `None` when that is steeper than the pitch limit.
     pub(super) fn polygon(&self, curve: &Curve, from: Pose, to: Vec3) -> Option<Vec<Vec3>> {
         let r = self.lattice.radius;
         let dz = if self.three_d { to.z - from.p.z } else { 0.0 };
-        let straight = curve.straight();
+        let length = curve.length();
         let tan_pitch = self.model.vehicle.max_pitch.tan() * (1.0 - PITCH_MARGIN);
-        if dz != 0.0 && dz.abs() > tan_pitch * straight {
+        if dz != 0.0 && dz.abs() > tan_pitch * length {
             return None;
         }
         let mut tp = TangentPolygon::new(from, r, self.max_piece);
         for (turn, len) in curve.turns.into_iter().zip(curve.lengths) {
+            let climb = if length > 0.0 { dz * len / length } else { 0.0 };
             if turn == 0 {
-                tp.straight(len, if straight > 0.0 { dz * len / straight } else { 0.0 });
+                tp.straight(len, climb);
             } else {
-                tp.arc(f64::from(turn) * len / r, 0.0);
+                tp.arc(f64::from(turn) * len / r, climb);
             }
         }
         let mut pts = tp.finish();
@@ -94,21 +117,31 @@ impl Search<'_> {
         Some(pts)
     }
 
-    /// The shot curves from `pose` to the goal that respect the pitch limit, shortest first,
-    /// at most [`SHOT_TRIES`]: the two turn-then-straight curves (free final heading) and the
-    /// Dubins curves to the fixed goal headings.
+    /// The shortest curve of curvature at most 1/r from pose `from` to pose `to` within the
+    /// pitch limit (a Dubins-airplane curve; the planar Dubins curve in 2-D).
+    pub(super) fn connect(&self, from: Pose, to: Pose) -> Option<Curve> {
+        let r = self.lattice.radius;
+        if self.three_d {
+            let pitch = planning_pitch(self.model.vehicle.max_pitch);
+            Dubins3::shortest(from, to, r, pitch).map(|d| Curve::of_dubins3(&d))
+        } else {
+            Dubins::shortest(from, to, r).map(|d| Curve::of_dubins(&d))
+        }
+    }
+
+    /// The shot curves from `pose` to the goal, shortest first, at most [`SHOT_TRIES`]: the two
+    /// turn-then-straight curves (free final heading) when their climb is within the pitch
+    /// limit, and the curves to the goal at the fixed goal headings ([`Search::connect`]).
     pub(super) fn shots(&self, pose: Pose) -> Vec<Vec<Vec3>> {
         let r = self.lattice.radius;
         let mut curves: Vec<Curve> = [1, -1]
             .into_iter()
             .filter_map(|side| turn_then_straight(pose, self.goal.truncate(), r, side))
-            .map(|ts| Curve { turns: [ts.side, 0, 0], lengths: [r * ts.sweep, ts.straight, 0.0] })
+            .map(|ts| Curve::turn_then_straight(ts.side, r * ts.sweep, ts.straight))
             .collect();
         for k in 0..self.goal_headings {
             let h = std::f64::consts::TAU * k as f64 / self.goal_headings as f64;
-            if let Some(d) = Dubins::shortest(pose, Pose::new(self.goal, h), r) {
-                curves.push(Curve::of_dubins(&d));
-            }
+            curves.extend(self.connect(pose, Pose::new(self.goal, h)));
         }
         curves.sort_by(|a, b| a.length().total_cmp(&b.length()));
         curves.iter().filter_map(|c| self.polygon(c, pose, self.goal)).take(SHOT_TRIES).collect()

@@ -20,9 +20,11 @@
 //!   (1.0824) are not a bound: along a one-cell-wide diagonal staircase of free cells a curve
 //!   needs sqrt 2 per cell where the grid without corner cutting needs 2.
 //!
-//! The heuristic is the larger of the two, combined with the height still to change
-//! (sqrt(h^2 + dz^2), by Minkowski's inequality a bound on the 3-D length), and turned into a
-//! cost by the cost model's own lower bound at the best ground speed the current allows.
+//! The heuristic is the larger of the two and of |dz| / tan(pitch limit) (every piece keeps
+//! within the pitch limit, so the horizontal length is at least that for a height change dz),
+//! combined with dz (sqrt(h^2 + dz^2), by Minkowski's inequality a bound on the 3-D length),
+//! and turned into a cost by the cost model's own lower bound at the best ground speed the
+//! current allows.
 
 use std::collections::VecDeque;
 use std::f64::consts::{FRAC_PI_2, TAU};

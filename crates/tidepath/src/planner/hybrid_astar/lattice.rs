@@ -10,12 +10,8 @@
 //! bin; with r of the cell size or larger, a step is one arc of one or a few bins, as in Dolgov
 //! et al. (2010).
 //!
-//! In 3-D each primitive with a straight part also comes climbing and diving by one layer
-//! (`dz`, less where the pitch limit needs it), on its straight part only: its arc stays level.
-//! A climb spread over an arc makes the tangent polygon's consecutive fillets meet at points
-//! whose heights differ, and the straight part the fillet model then finds between them has
-//! zero length up to rounding, so its slope (as the evaluation judges pitch) would be rounding
-//! noise; on a level arc those heights are equal exactly.
+//! In 3-D each primitive also comes climbing and diving by one layer (`dz`, less where the
+//! pitch limit needs it), spread evenly over its whole length, arc and straight.
 //!
 //! Each primitive is built once from the origin as a tangent polygon
 //! ([`crate::kinematics::TangentPolygon`]): its fillets at radius r are exactly its arcs, so the
@@ -46,20 +42,16 @@ pub struct Primitive {
 }
 
 impl Primitive {
-    /// A level turn of `sweep` rad, then straight to a horizontal length of `step`, climbing
-    /// `dz` on the straight part.
+    /// A turn of `sweep` rad, then straight to a horizontal length of `step`, climbing `dz`
+    /// evenly over the whole.
     fn new(radius: f64, sweep: f64, step: f64, dz: f64, max_piece: f64) -> Self {
         let arc = radius * sweep.abs();
         let straight = (step - arc).max(0.0);
+        let length = arc + straight;
         let mut tp = TangentPolygon::new(Pose::new(Vec3::ZERO, 0.0), radius, max_piece);
-        tp.arc(sweep, 0.0);
-        tp.straight(straight, dz);
-        Self { points: tp.finish(), sweep, length_3d: arc + straight.hypot(dz) }
-    }
-
-    /// The straight part's length for these settings.
-    fn straight(radius: f64, sweep: f64, step: f64) -> f64 {
-        (step - radius * sweep.abs()).max(0.0)
+        tp.arc(sweep, dz * arc / length);
+        tp.straight(straight, dz * straight / length);
+        Self { points: tp.finish(), sweep, length_3d: length.hypot(dz) }
     }
 
     /// Its points placed at `at`, into `out` (cleared first).
@@ -100,7 +92,7 @@ impl Lattice {
             turns.push(m / 2);
         }
         let tan_pitch = max_pitch.tan() * (1.0 - PITCH_MARGIN);
-        // One layer per step, less where the pitch limit needs it on a straight step.
+        // One layer per step, less where the pitch limit needs it.
         let dz = layer.map(|l| l.min(step * tan_pitch));
         let mut sweeps = vec![0.0];
         for &m in &turns {
@@ -108,14 +100,10 @@ impl Lattice {
         }
         let mut primitives: Vec<Primitive> =
             sweeps.iter().map(|&a| Primitive::new(radius, a, step, 0.0, max_piece)).collect();
+        // Every primitive is at least a step long, so none is steeper than dz over a step.
         if let Some(dz) = dz.filter(|&d| d > 0.0) {
             for k in [1.0, -1.0] {
-                for &a in &sweeps {
-                    // Only where the straight part is long enough to climb a layer.
-                    if dz <= Primitive::straight(radius, a, step) * tan_pitch {
-                        primitives.push(Primitive::new(radius, a, step, k * dz, max_piece));
-                    }
-                }
+                primitives.extend(sweeps.iter().map(|&a| Primitive::new(radius, a, step, k * dz, max_piece)));
             }
         }
         Self { bins, bin, radius, step, primitives }
@@ -156,15 +144,16 @@ mod tests {
         let l = Lattice::new(800.0, 72, 40.0, Some(8.75), 20f64.to_radians(), MAX_PIECE);
         assert_eq!(turns(&l), vec![18, 9, 4, 2, 1]);
         assert_eq!(l.primitives.len(), 33);
+        // r = 30 m, 5 m cells, 1 m layers: the pure arcs climb too.
+        let l3 = Lattice::new(5.0, 72, 30.0, Some(1.0), 20f64.to_radians(), MAX_PIECE);
+        assert_eq!(l3.primitives.len(), 15);
         for p in &l.primitives {
             let end = *p.points.last().unwrap();
             assert!(end.z == 0.0 || (end.z.abs() - 8.75).abs() < 1e-12);
-            let (r, a) = (40.0, p.sweep);
-            let rest = 800.0 * SQRT_2 - r * a.abs();
-            assert!((p.length_3d - (r * a.abs() + rest.hypot(end.z))).abs() < 1e-9);
-            // The end lies where a level turn then a straight of the rest leaves it; the arc's
-            // points are all at height 0.
-            assert!(p.points[..p.points.len() - 1].iter().all(|q| q.z == 0.0));
+            let (r, a, length) = (40.0, p.sweep, 800.0 * SQRT_2);
+            let rest = length - r * a.abs();
+            assert!((p.length_3d - length.hypot(end.z)).abs() < 1e-9);
+            // The end lies where a turn then a straight of the rest leaves it.
             let turned = Vec3::new(r * a.abs().sin(), a.signum() * r * (1.0 - a.cos()), 0.0);
             let expect = turned + Vec3::new(a.cos(), a.sin(), 0.0) * rest;
             assert!((end.truncate() - expect.truncate()).length() < 1e-9, "{end:?} {expect:?}");

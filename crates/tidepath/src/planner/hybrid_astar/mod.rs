@@ -282,6 +282,7 @@ impl HybridAstar {
             weight: self.params.weight,
             goal_headings: self.params.goal_headings,
             max_piece,
+            tan_pitch: m.vehicle.max_pitch.tan(),
             three_d,
         };
         let out = search.run(termination, max_expansions);

@@ -130,6 +130,8 @@ pub struct Search<'a> {
     /// Fixed goal headings the shots also try.
     pub goal_headings: usize,
     pub max_piece: f64,
+    /// Tangent of the pitch limit.
+    pub tan_pitch: f64,
     pub three_d: bool,
 }
 
@@ -140,11 +142,14 @@ impl Search<'_> {
     }
 
     /// A lower bound on the length still to fly from `pose`, or `None` when the goal cannot be
-    /// reached from its column.
+    /// reached from its column (or its height with no pitch allowed): the horizontal length is
+    /// at least both horizontal bounds and the height left over the pitch limit's slope.
     fn length_bound(&self, pose: Pose) -> Option<f64> {
         let grid = self.hops.bound(pose.p)?;
         let free = free_heading_length(pose, self.goal.truncate(), self.lattice.radius);
-        Some(free.max(grid).hypot(self.goal.z - pose.p.z))
+        let dz = self.goal.z - pose.p.z;
+        let climb = if dz == 0.0 { 0.0 } else { dz.abs() / self.tan_pitch };
+        Some(free.max(grid).max(climb).hypot(dz)).filter(|l| l.is_finite())
     }
 
     fn cost_bound(&self, length: f64) -> f64 {

@@ -15,7 +15,6 @@ use std::f64::consts::PI;
 use super::flight::{Check, Curve};
 use super::search::Search;
 use crate::geom::Vec3;
-use crate::kinematics::dubins::Dubins;
 use crate::kinematics::Pose;
 use crate::termination::Termination;
 
@@ -69,8 +68,8 @@ impl Search<'_> {
                 let target = poses[j].p;
                 // To the last state with its own heading, so its shot to the goal stays open.
                 let (curve, end) = if j + 1 == n {
-                    match Dubins::shortest(pose, poses[j], r) {
-                        Some(d) => (Curve::of_dubins(&d), poses[j]),
+                    match self.connect(pose, poses[j]) {
+                        Some(c) => (c, poses[j]),
                         None => return Ok(None),
                     }
                 } else {
@@ -117,10 +116,10 @@ impl Search<'_> {
             }
             let (j, leg) = match best {
                 Some(b) => b,
-                // Not even the next state: the Dubins curve to its pose, else give up.
+                // Not even the next state: the curve to its pose, else give up.
                 None => {
-                    let d = Dubins::shortest(pose, poses[i + 1], r)?;
-                    let points = self.polygon(&Curve::of_dubins(&d), pose, poses[i + 1].p)?;
+                    let curve = self.connect(pose, poses[i + 1])?;
+                    let points = self.polygon(&curve, pose, poses[i + 1].p)?;
                     (i + 1, fly(points, t, poses[i + 1], g[i + 1] - total).ok()??)
                 }
             };

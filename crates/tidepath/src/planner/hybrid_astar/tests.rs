@@ -267,3 +267,25 @@ fn a_vehicle_without_a_radius_gets_the_default_and_the_reason_names_it() {
     assert_eq!(p.status, Status::Feasible, "{}", p.reason);
     dense_check(&w, &m.vehicle, p.missions[0].path(), 10.0).unwrap();
 }
+
+#[test]
+fn a_dive_too_steep_for_the_straight_line_spirals_within_the_pitch_limit() {
+    let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -300.0), Vec3::new(1000.0, 1000.0, 0.0)));
+    w.terrain = Terrain::Peaks(GaussianPeaks { base: -290.0, peaks: vec![], ceiling: None });
+    let r = 40.0;
+    let v = vehicle(Some(r));
+    // 160 m down over 150 m: at 20 degrees at most, at least 440 m of horizontal flight.
+    let m = Mission::new("m", v.clone(), Vec3::new(500.0, 500.0, -20.0), Vec3::new(650.0, 500.0, -180.0), 0.0);
+    let p = plan(&w, &m, "", Termination::default());
+    assert_eq!(p.status, Status::Feasible, "{}", p.reason);
+    let path = p.missions[0].path();
+    dense_check(&w, &v, path, r).unwrap();
+    let mut horizontal = 0.0;
+    fillet::for_each_piece(path, r, |pc| match pc {
+        FlownPiece::Line { a, b, .. } => horizontal += (b - a).truncate().length(),
+        FlownPiece::Arc(arc) => horizontal += arc.horizontal_length(),
+    });
+    assert!(horizontal >= 160.0 / 20f64.to_radians().tan() - 1e-6, "{horizontal}");
+    let pitch = p.missions[0].metrics.as_ref().unwrap().max_pitch_deg;
+    assert!(pitch <= 20.0 + 1e-9, "{pitch}");
+}
