@@ -170,3 +170,48 @@ impl Hops {
         (h != UNREACHED).then(|| self.step * (f64::from(h) - 1.0).max(0.0))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::Aabb;
+    use crate::vehicle::Vehicle;
+    use crate::world::{Current, Dims, Obstacle, Shape, Terrain, World};
+
+    #[test]
+    fn the_hop_bound_sees_the_detour_round_a_wall_and_stays_below_it() {
+        // A wall from the bottom edge to y = 900 between start and goal: every path goes round
+        // its top, at least 2 sqrt(380^2 + 800^2) + 40 = 1811 m; the straight line is 800 m.
+        let w = World {
+            bounds: Aabb::new(Vec3::ZERO, Vec3::new(1000.0, 1000.0, 0.0)),
+            dims: Dims::Two,
+            terrain: Terrain::None,
+            obstacles: vec![Obstacle::fixed(Shape::Box {
+                min: Vec3::new(480.0, -10.0, -10.0),
+                max: Vec3::new(520.0, 900.0, 10.0),
+            })],
+            current: Current::None,
+            frame: None,
+        };
+        let v = Vehicle { safety_distance: 0.0, ..Vehicle::default() };
+        let (start, goal) = (Vec3::new(100.0, 100.0, 0.0), Vec3::new(900.0, 100.0, 0.0));
+        let shortest = 2.0 * (380f64.powi(2) + 800f64.powi(2)).sqrt() + 40.0;
+        // (A cell is blocked only when all of it is: cells of 20 m or less see the 40 m wall.)
+        for cell in [5.0, 10.0, 20.0] {
+            let raster = Raster::new(&w, &v, cell, 1.0, 0.0).unwrap();
+            let hops = Hops::new(&raster, goal, &|| false).unwrap();
+            let b = hops.bound(start).unwrap();
+            // Below the shortest path, and well above the straight line (the Chebyshev count
+            // loses up to 1 - 1 / sqrt 2 on diagonal legs, 10 % on these).
+            assert!(b <= shortest && b > 0.85 * shortest, "{cell} m cells: {b} vs {shortest}");
+            // Where start and goal share a column, nothing is claimed.
+            assert_eq!(hops.bound(goal), Some(0.0));
+        }
+        // A wall across the whole domain leaves the start's column unreached.
+        let mut closed = w.clone();
+        closed.obstacles[0] =
+            Obstacle::fixed(Shape::Box { min: Vec3::new(480.0, -10.0, -10.0), max: Vec3::new(520.0, 1010.0, 10.0) });
+        let raster = Raster::new(&closed, &v, 10.0, 1.0, 0.0).unwrap();
+        assert_eq!(Hops::new(&raster, goal, &|| false).unwrap().bound(start), None);
+    }
+}
