@@ -93,8 +93,8 @@ crate::params! {
         /// last try exceed the steps left divided by this.
         shot_ratio: f64 = 3.5, Range::Number { lo: Bound::Open(0.0), hi: Bound::Closed(1e6) }, "Nav2 Smac Hybrid-A* (analytic_expansion_ratio)";
         /// Weight on the heuristic (weighted A*, Pohl 1970): 1 expands every state that could
-        /// lead to a cheaper path on the lattice; w > 1 finds a path costing at most w times the
-        /// lattice's best with far fewer expansions.
+        /// lead to a cheaper path on the lattice; above 1, far fewer, for paths that may cost
+        /// more (at most w times the best on an exact graph with a consistent heuristic).
         weight: f64 = 1.5, Range::closed(1.0, 10.0), "Pohl 1970";
         /// Fixed goal headings the shots try besides the free-heading curves (0: none).
         goal_headings: usize = 8, Range::integer(0, 360), "tidepath";
