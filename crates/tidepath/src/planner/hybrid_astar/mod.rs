@@ -256,15 +256,15 @@ impl HybridAstar {
             m.vehicle.max_pitch,
             max_piece,
         );
-        let whose = if own { "the vehicle's" } else { "a default" };
+        let whose = if own { "the vehicle's" } else { "the planner's" };
         let space = if three_d {
             format!(
-                "the {}-heading lattice of {} x {} cells x {} layers ({whose} {radius:.1} m turning radius)",
+                "the {}-heading lattice of {} x {} cells x {} layers for {whose} {radius:.1} m turning radius",
                 lattice.bins, raster.nx, raster.ny, raster.nz
             )
         } else {
             format!(
-                "the {}-heading lattice of {} x {} cells ({whose} {radius:.1} m turning radius)",
+                "the {}-heading lattice of {} x {} cells for {whose} {radius:.1} m turning radius",
                 lattice.bins, raster.nx, raster.ny
             )
         };

@@ -206,7 +206,7 @@ fn a_corner_too_tight_for_the_radius_is_no_route_on_the_lattice() {
     let p = plan(&w, &m, "cells = 80", Termination::default());
     assert_eq!(p.status, Status::Infeasible, "{}", p.reason);
     assert!(
-        p.reason.starts_with("no route on the 72-heading lattice of 80 x 80 cells (the vehicle's 100.0 m turning radius) (searched completely)"),
+        p.reason.starts_with("no route on the 72-heading lattice of 80 x 80 cells for the vehicle's 100.0 m turning radius (searched completely)"),
         "{}",
         p.reason
     );
@@ -262,10 +262,17 @@ fn a_vehicle_without_a_radius_gets_the_default_and_the_reason_names_it() {
     let mut w = world_2d(1000.0, 400.0);
     w.obstacles.push(Obstacle::fixed(Shape::Circle { center: Vec2::new(500.0, 200.0), radius: 100.0 }));
     let m = Mission::new("m", vehicle(None), Vec3::new(100.0, 200.0, 0.0), Vec3::new(900.0, 200.0, 0.0), 0.0);
-    // Two cells of 5 m: a 10 m radius.
+    // Two cells of 5 m: a 10 m radius; the vehicle flies the polygon itself.
     let p = plan(&w, &m, "", Termination::default());
     assert_eq!(p.status, Status::Feasible, "{}", p.reason);
     dense_check(&w, &m.vehicle, p.missions[0].path(), 10.0).unwrap();
+    let t = Termination { max_expansions: Some(5), ..Termination::default() };
+    let p = plan(&w, &m, "radius = 25.0", t);
+    assert!(
+        p.reason.contains("on the 72-heading lattice of 200 x 80 cells for the planner's 25.0 m turning radius"),
+        "{}",
+        p.reason
+    );
 }
 
 #[test]
