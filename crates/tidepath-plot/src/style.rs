@@ -515,3 +515,25 @@ mod tests {
         assert!(legend_height(&entries, 400) > legend_height(&entries[..1], 400));
     }
 }
+
+/// Which of a sequence of screen points to mark so that marks stay at least `min_px` pixels
+/// apart (the first and the last are always marked): dense waypoints, such as a Dubins curve's
+/// tangent polygon, would otherwise pile into a solid band of rings.
+pub fn spaced_marks(px: &[(i32, i32)], min_px: i32) -> Vec<bool> {
+    let mut keep = vec![false; px.len()];
+    let mut last: Option<(i32, i32)> = None;
+    for (i, &q) in px.iter().enumerate() {
+        let far = last.is_none_or(|l| {
+            let (dx, dy) = (i64::from(q.0 - l.0), i64::from(q.1 - l.1));
+            dx * dx + dy * dy >= i64::from(min_px) * i64::from(min_px)
+        });
+        if far || i + 1 == px.len() {
+            keep[i] = true;
+            last = Some(q);
+        }
+    }
+    keep
+}
+
+/// Least distance (px) between two waypoint marks on a flown curve.
+pub const MARK_SPACING_PX: i32 = 9;

@@ -216,10 +216,15 @@ pub(super) fn draw_paths<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPat
             plot.draw(&PathElement::new(pts.clone(), style::line(WHITE.mix(0.75), 5))).map_err(plot_err)?;
             plot.draw(&PathElement::new(pts.clone(), style::line(color, 3))).map_err(plot_err)?;
         }
-        for &q in &waypoints {
+        let px: Vec<(i32, i32)> = waypoints.iter().map(|&(x, y)| to_px(chart, x, y)).collect();
+        let marked = style::spaced_marks(&px, style::MARK_SPACING_PX);
+        for (&q, &mark) in waypoints.iter().zip(&marked) {
             if drawn.flown {
-                plot.draw(&Circle::new(q, 3, style::fill(WHITE))).map_err(plot_err)?;
-                plot.draw(&Circle::new(q, 3, style::line(color, 1))).map_err(plot_err)?;
+                // Rings at least a few pixels apart: a tangent polygon's waypoints are dense.
+                if mark {
+                    plot.draw(&Circle::new(q, 3, style::fill(WHITE))).map_err(plot_err)?;
+                    plot.draw(&Circle::new(q, 3, style::line(color, 1))).map_err(plot_err)?;
+                }
             } else {
                 plot.draw(&Circle::new(q, 4, style::fill(WHITE))).map_err(plot_err)?;
                 plot.draw(&Circle::new(q, 3, style::fill(color))).map_err(plot_err)?;

@@ -310,8 +310,15 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
             if pts.len() >= 2 {
                 chart.draw_series(LineSeries::new(pts, style::line(color, 2))).map_err(plot_err)?;
             }
-            chart.draw_series(marks.iter().map(|&q| Circle::new(q, 3, style::fill(WHITE)))).map_err(plot_err)?;
-            chart.draw_series(marks.iter().map(|&q| Circle::new(q, 3, style::line(color, 1)))).map_err(plot_err)?;
+            // Rings at least a few pixels apart: a tangent polygon's waypoints are dense.
+            let px: Vec<(i32, i32)> = marks.iter().map(|q| chart.backend_coord(q)).collect();
+            let rings: Vec<(f64, f64)> = marks
+                .iter()
+                .zip(style::spaced_marks(&px, style::MARK_SPACING_PX))
+                .filter_map(|(&q, keep)| keep.then_some(q))
+                .collect();
+            chart.draw_series(rings.iter().map(|&q| Circle::new(q, 3, style::fill(WHITE)))).map_err(plot_err)?;
+            chart.draw_series(rings.iter().map(|&q| Circle::new(q, 3, style::line(color, 1)))).map_err(plot_err)?;
         }
     }
     for ((p, d), track) in paths.iter().zip(&drawn).zip(&tracks) {
