@@ -537,3 +537,16 @@ pub fn spaced_marks(px: &[(i32, i32)], min_px: i32) -> Vec<bool> {
 
 /// Least distance (px) between two waypoint marks on a flown curve.
 pub const MARK_SPACING_PX: i32 = 9;
+
+#[cfg(test)]
+mod spacing_tests {
+    use super::spaced_marks;
+
+    #[test]
+    fn marks_keep_their_distance_and_the_ends() {
+        let px = [(0, 0), (3, 0), (6, 0), (9, 0), (10, 0), (30, 0), (31, 1)];
+        assert_eq!(spaced_marks(&px, 9), [true, false, false, true, false, true, true]);
+        assert_eq!(spaced_marks(&[], 9), Vec::<bool>::new());
+        assert_eq!(spaced_marks(&[(5, 5)], 9), [true]);
+    }
+}

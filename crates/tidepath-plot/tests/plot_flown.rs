@@ -85,10 +85,12 @@ fn a_flown_curve_is_the_line_with_the_waypoints_marked_apart() {
         lines.iter().map(Vec::len).collect::<Vec<_>>()
     );
     assert_eq!(polylines(&svg, "1", ORANGE, 2).iter().map(Vec::len).max(), Some(flown.points.len()));
-    // Every waypoint is a small hollow marker, on the plan view and on the profile (and two
-    // in the legend swatch of each panel).
+    // Waypoints are small hollow markers, on the plan view and on the profile (and two in the
+    // legend swatch of each panel), at least a few pixels apart: the first and last always,
+    // the others where they do not crowd.
     let hollow = format!(r#"r="3" opacity="1" fill="none" stroke="{ORANGE}" stroke-width="1""#);
-    assert_eq!(svg.matches(&hollow).count(), 2 * m.waypoints.len() + 4);
+    let rings = svg.matches(&hollow).count() - 4;
+    assert!(rings >= 4 && rings <= 2 * m.waypoints.len(), "{rings} rings for {} waypoints", m.waypoints.len());
     // No filled waypoint dots but the legend's.
     assert_eq!(svg.matches(&format!(r#"r="3" opacity="1" fill="{ORANGE}""#)).count(), 0);
 
