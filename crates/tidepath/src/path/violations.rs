@@ -91,19 +91,8 @@ impl PathModel<'_> {
             let h = (w[1] - w[0]).truncate();
             let h_len = h.length();
             if h_len > 0.0 {
-                if let Some((ph, ph_len)) = prev_h {
-                    let c = turn_cos(ph, ph_len, h, h_len);
-                    if c < veh.max_turn.cos() {
-                        push(
-                            ViolationKind::Turn,
-                            i,
-                            format!(
-                                "waypoint {i} turn {:.1} deg exceeds the limit {:.1} deg",
-                                c.acos().to_degrees(),
-                                veh.max_turn.to_degrees()
-                            ),
-                        );
-                    }
+                if let Some(text) = prev_h.and_then(|p| joint_turn(veh, i, p, (h, h_len))) {
+                    push(ViolationKind::Turn, i, text);
                 }
                 prev_h = Some((h, h_len));
             }
@@ -143,24 +132,26 @@ impl PathModel<'_> {
                 );
             }
             if h_len > 0.0 {
-                if let Some((ph, ph_len)) = prev_h {
-                    let c = turn_cos(ph, ph_len, h, h_len);
-                    if c < veh.max_turn.cos() {
-                        push(
-                            ViolationKind::Turn,
-                            i,
-                            format!(
-                                "waypoint {i} turn {:.1} deg exceeds the limit {:.1} deg",
-                                c.acos().to_degrees(),
-                                veh.max_turn.to_degrees()
-                            ),
-                        );
-                    }
+                if let Some(text) = prev_h.and_then(|p| joint_turn(veh, i, p, (h, h_len))) {
+                    push(ViolationKind::Turn, i, text);
                 }
                 prev_h = Some((h, h_len));
             }
         }
     }
+}
+
+/// The message for joint `i` (horizontal directions `before` and `after` with their lengths)
+/// when its heading change exceeds the vehicle's waypoint angle limit.
+fn joint_turn(veh: &crate::vehicle::Vehicle, i: usize, before: (Vec2, f64), after: (Vec2, f64)) -> Option<String> {
+    let c = turn_cos(before.0, before.1, after.0, after.1);
+    (c < veh.max_turn.cos()).then(|| {
+        format!(
+            "waypoint {i} turn {:.1} deg exceeds the limit {:.1} deg",
+            c.acos().to_degrees(),
+            veh.max_turn.to_degrees()
+        )
+    })
 }
 
 /// The violation kind and message of one motion issue of the motion a -> b leaving at `t0`;

@@ -8,11 +8,10 @@
 
 use super::raster_search::{Objective, RasterSearch};
 use super::{Claim, Planner, PlannerOutput, Problem, RunOptions, SearchStats};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::geom::Vec3;
 use crate::optim::Progress;
 use crate::params::{Bound, Checked, Range, Word};
-use crate::raster::Raster;
 use crate::rng::Rng;
 use crate::termination::{StopReason, Termination};
 use crate::world::{Dims, Terrain, World};
@@ -175,14 +174,10 @@ impl Planner for GridSearch {
     }
 
     fn check(&self, problem: &Problem<'_>) -> Result<()> {
-        for i in 0..problem.missions.len() {
+        super::raster_search::check_raster_sizes(problem, self.id, |i| {
             let (cell, cell_z, _) = self.raster_settings(problem, i);
-            Raster::shape(problem.world, &problem.missions[i].vehicle, cell, cell_z).map_err(|e| match e {
-                Error::Input { message, .. } => Error::input(format!("planner.params.{}", self.id), message),
-                other => other,
-            })?;
-        }
-        Ok(())
+            (cell, cell_z)
+        })
     }
 
     fn plan(

@@ -297,3 +297,16 @@ impl<G: LineOfSight> Relax for &mut Priced<'_, '_, G> {
         }
     }
 }
+
+/// Refuses, before planning, a raster too large for memory for any mission: `cells(i)` gives
+/// mission i's horizontal and vertical cell sizes; errors name `planner.params.ID`.
+pub fn check_raster_sizes(problem: &Problem<'_>, id: &str, cells: impl Fn(usize) -> (f64, f64)) -> Result<()> {
+    for i in 0..problem.missions.len() {
+        let (cell, cell_z) = cells(i);
+        Raster::shape(problem.world, &problem.missions[i].vehicle, cell, cell_z).map_err(|e| match e {
+            Error::Input { message, .. } => Error::input(format!("planner.params.{id}"), message),
+            other => other,
+        })?;
+    }
+    Ok(())
+}

@@ -63,7 +63,7 @@ pub use heuristic::{free_heading_length, turn_then_straight, TurnStraight};
 
 use super::raster_search::current_speed_bound;
 use super::{Claim, Planner, PlannerOutput, Problem, RunOptions, SearchStats};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::optim::Progress;
 use crate::params::{Bound, Checked, Range};
 use crate::raster::Raster;
@@ -141,14 +141,10 @@ impl Planner for HybridAstar {
     }
 
     fn check(&self, problem: &Problem<'_>) -> Result<()> {
-        for i in 0..problem.missions.len() {
+        super::raster_search::check_raster_sizes(problem, "hybrid-astar", |i| {
             let (cell, cell_z, _, _) = self.settings(problem, i);
-            Raster::shape(problem.world, &problem.missions[i].vehicle, cell, cell_z).map_err(|e| match e {
-                Error::Input { message, .. } => Error::input("planner.params.hybrid-astar", message),
-                other => other,
-            })?;
-        }
-        Ok(())
+            (cell, cell_z)
+        })
     }
 
     fn plan(
