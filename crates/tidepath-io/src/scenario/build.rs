@@ -516,7 +516,7 @@ fn build_settings(spec: &ModelSpec, world: &World) -> Result<ModelSettings> {
         None => diag / 100.0,
     };
     let arc_tolerance = match spec.arc_tolerance {
-        Some(t) if !(t >= MIN_ARC_TOLERANCE_M && t <= MAX_ARC_TOLERANCE_M) => {
+        Some(t) if !(MIN_ARC_TOLERANCE_M..=MAX_ARC_TOLERANCE_M).contains(&t) => {
             return Err(Error::input(
                 "model.arc_tolerance",
                 format!("must be in [{MIN_ARC_TOLERANCE_M}, {MAX_ARC_TOLERANCE_M}] m, got {t:?}"),

@@ -144,9 +144,10 @@ fn leg(points: &[Vec3], j: usize) -> (Vec2, f64) {
     (if l > 0.0 { d / l } else { Vec2::ZERO }, l)
 }
 
+/// Whether a leg is too short to have a heading (a NaN length counts as too short).
 #[inline]
 fn degenerate(len: f64, r: f64) -> bool {
-    !(len > DEGENERATE * r)
+    len.partial_cmp(&(DEGENERATE * r)) != Some(std::cmp::Ordering::Greater)
 }
 
 /// Heading change and side between two unit directions.
