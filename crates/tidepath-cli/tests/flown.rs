@@ -93,3 +93,63 @@ fn exports_carry_the_flown_curve_and_read_back_as_waypoints() {
     assert_eq!(features[1]["geometry"]["coordinates"].as_array().unwrap().len(), flown);
     assert_eq!(features[0]["geometry"]["coordinates"].as_array().unwrap().len(), waypoints);
 }
+
+/// The issue's acceptance runs from the command line: Hybrid-A* on `salish-strait-turns` with
+/// a figure, Theta* smoothed by `dubins`, and Hybrid-A* as the reference of a plan; each
+/// feasible with every turn at the vehicle's radius or wider.
+#[test]
+fn salish_strait_turns_plans_flyable_routes_from_the_command_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for args in [
+        &["plan", "salish-strait-turns", "--planner", "hybrid-astar", "--plot", "t.svg", "--out", "t.gpx"][..],
+        // The route read back from the GPX file, rounded to centimetres, is still flyable.
+        &["eval", "salish-strait-turns", "t.gpx"][..],
+        &["plan", "salish-strait-turns", "--planner", "theta-star", "--smooth", "dubins"][..],
+        &["plan", "salish-strait-turns", "--planner", "astar", "--reference", "hybrid-astar"][..],
+    ] {
+        let o = tidepath(args, d);
+        let out = stdout(&o);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {out}{}", String::from_utf8_lossy(&o.stderr));
+        let verdict = if args[0] == "eval" { "verdict: feasible" } else { ": feasible" };
+        assert!(out.contains(verdict), "{args:?}: {out}");
+        let turns = out.lines().find(|l| l.trim_start().starts_with("turns")).unwrap_or_else(|| panic!("{out}"));
+        // `eval` prints "turns: radius >= ...", `plan` "turns          radius >= ...".
+        assert!(turns.contains("radius >= 40.0 m") && !turns.contains("tighter"), "{args:?}: {turns}");
+        if args.contains(&"--reference") {
+            assert!(out.contains("reference      hybrid-astar (feasible): cost"), "{out}");
+        }
+    }
+    let svg = std::fs::read_to_string(d.join("t.svg")).unwrap();
+    assert!(svg.contains("hybrid-astar: flown, turns of radius 40 m"), "the figure draws the flown curve");
+}
+
+/// A corner sharper than the radius allows is a violation naming the waypoint and the radius
+/// its legs allow (exit 1); the same scenario without a radius judges the same route feasible.
+#[test]
+fn eval_names_a_corner_too_sharp_for_the_radius() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let open = "name = \"open-water\"\n[world]\ndimensions = 2\nbounds = { min = [0.0, 0.0, 0.0], max = [10000.0, 10000.0, 0.0] }\n[vehicle]\nspeed = 1.5\nmax_turn_deg = 120.0\n[mission]\nstart = [1000.0, 5000.0, 0.0]\ngoal = [9000.0, 5000.0, 0.0]\n";
+    std::fs::write(d.join("plain.toml"), open).unwrap();
+    std::fs::write(
+        d.join("r.toml"),
+        open.replace("max_turn_deg = 120.0", "max_turn_deg = 120.0\nturn_radius = 8000.0"),
+    )
+    .unwrap();
+    std::fs::write(d.join("corner.json"), r#"{"waypoints": [[1000, 5000, 0], [5000, 8000, 0], [9000, 5000, 0]]}"#)
+        .unwrap();
+    let o = tidepath(&["eval", "plain.toml", "corner.json"], d);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    assert!(stdout(&o).contains("verdict: feasible"), "{}", stdout(&o));
+    let o = tidepath(&["eval", "r.toml", "corner.json"], d);
+    assert_eq!(o.status.code(), Some(1));
+    // 73.7 degrees at r = 8 km needs 6 km of each 5 km leg: a radius of 6.67 km fits.
+    assert!(
+        stdout(&o).contains(
+            "- waypoint 1: the 73.7 deg turn needs 6000.0 m of each leg at the vehicle's 8000 m turning radius; its legs (5000.0 m and 5000.0 m) allow a radius of at most 6666.7 m"
+        ),
+        "{}",
+        stdout(&o)
+    );
+}

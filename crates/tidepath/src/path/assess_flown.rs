@@ -118,11 +118,15 @@ impl PathModel<'_> {
                 let (l_in, l_out) =
                     ((points[i] - points[i - 1]).truncate().length(), (points[i + 1] - points[i]).truncate().length());
                 let need = r * (c.turn * 0.5).tan();
+                // Say so when a neighbouring turn takes part of a leg.
+                let turns_at = |j: usize| j > 0 && j + 1 < points.len() && fillet::corner(points, j, r).turn > 0.0;
+                let shared =
+                    if turns_at(i - 1) || turns_at(i + 1) { ", shared with the neighbouring turns" } else { "" };
                 push(
                     ViolationKind::Turn,
                     i,
                     format!(
-                        "waypoint {i}: the {:.1} deg turn needs {need:.1} m of each leg at the vehicle's {r} m turning radius; its legs ({l_in:.1} m and {l_out:.1} m, shared with the neighbouring turns) allow a radius of at most {:.1} m",
+                        "waypoint {i}: the {:.1} deg turn needs {need:.1} m of each leg at the vehicle's {r} m turning radius; its legs ({l_in:.1} m and {l_out:.1} m{shared}) allow a radius of at most {:.1} m",
                         c.turn.to_degrees(),
                         c.radius
                     ),

@@ -139,7 +139,8 @@ fn assess_and_violations_agree_on_random_paths() {
 fn a_turn_a_hair_too_tight_passes_only_within_the_arc_tolerance() {
     // A 4 degree turn at r = 40 needs 1.397 m of each leg; legs of 2 x 1.2 m allow 34.4 m. The
     // vehicle's own 40 m fillet would lie (40 - 34.4)(sec 2 deg - 1) = 3.4 mm from it: within
-    // the 5 cm tolerance, so it passes; the metrics still say the radius flown.
+    // the 5 cm tolerance, so it passes; the metrics leave such a turn out (it is what rounding
+    // in a file makes).
     let h = 4f64.to_radians();
     let p = [
         Vec3::new(10.0, 10.0, -50.0),
@@ -148,8 +149,8 @@ fn a_turn_a_hair_too_tight_passes_only_within_the_arc_tolerance() {
     ];
     let (a, _, m, v) = judge(&world(), Some(40.0), &p);
     assert!(a.feasible(), "{v:?}");
-    let rho = 1.2 / (h / 2.0).tan();
-    assert!((m.min_turn_radius_m.unwrap() - rho).abs() < 1e-9 && rho < 40.0, "{m:?}");
+    assert!(1.2 / (h / 2.0).tan() < 40.0);
+    assert_eq!(m.min_turn_radius_m, None, "{m:?}");
     // A right angle at 39 m instead of 40 would stray 1 (sqrt 2 - 1) = 0.41 m: a violation.
     let q = [Vec3::new(10.0, 10.0, -50.0), Vec3::new(49.0, 10.0, -50.0), Vec3::new(49.0, 49.0, -50.0)];
     let (a, ..) = judge(&world(), Some(40.0), &q);

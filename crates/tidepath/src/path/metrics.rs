@@ -18,7 +18,8 @@ pub struct Metrics {
     /// (segment, object) pairs closer than the safety distance.
     pub collisions: u32,
     /// With a turning radius: the smallest radius of a turn flown (the vehicle's own when
-    /// every fillet fits; `null` when the path has no turn). Absent without a radius.
+    /// every fillet fits; `null` when the path has no turn; turns passing only by the arc
+    /// tolerance's slack, rounding in a file, are left out). Absent without a radius.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub min_turn_radius_m: Option<f64>,
     /// With a turning radius: the flown curve's largest curvature (1/m), 1 / min_turn_radius_m.
@@ -37,10 +38,16 @@ impl PathModel<'_> {
             max_pitch_deg: a.max_pitch.to_degrees(),
             min_clearance_m: self.min_clearance(points, &times),
             collisions: a.collisions,
-            min_turn_radius_m: self.turn_radius().and_then(|r| min_turn_radius(points, r)),
-            max_curvature_per_m: self
-                .turn_radius()
-                .map(|r| min_turn_radius(points, r).map_or(0.0, |m| if m > 0.0 { 1.0 / m } else { f64::INFINITY })),
+            min_turn_radius_m: self.turn_radius().and_then(|r| min_turn_radius(points, r, self.settings.arc_tolerance)),
+            max_curvature_per_m: self.turn_radius().map(|r| {
+                min_turn_radius(points, r, self.settings.arc_tolerance).map_or(0.0, |m| {
+                    if m > 0.0 {
+                        1.0 / m
+                    } else {
+                        f64::INFINITY
+                    }
+                })
+            }),
         }
     }
 
@@ -60,13 +67,17 @@ impl PathModel<'_> {
     }
 }
 
-/// The smallest radius flown at a turn of `points` with radius `r` (`None`: no turn).
-fn min_turn_radius(points: &[Vec3], r: f64) -> Option<f64> {
+/// The smallest radius flown at a turn of `points` with radius `r` (`None`: no turn). Turns
+/// that pass only by the arc tolerance's slack (a heading change of rounding at points a
+/// centimetre apart, as files written to centimetres make them) are not counted: their
+/// "radius" measures the rounding, not a turn the vehicle makes.
+fn min_turn_radius(points: &[Vec3], r: f64, tolerance: f64) -> Option<f64> {
     let mut best: Option<f64> = None;
     crate::kinematics::fillet::for_each_piece(points, r, |p| {
         if let crate::kinematics::FlownPiece::Arc(a) = p {
-            if a.corner.turn > 0.0 {
-                best = Some(best.map_or(a.corner.radius, |b| b.min(a.corner.radius)));
+            let c = a.corner;
+            if c.turn > 0.0 && (c.fits || c.deviation(r) > tolerance) {
+                best = Some(best.map_or(c.radius, |b| b.min(c.radius)));
             }
         }
     });
