@@ -18,46 +18,54 @@ fn scenarios() -> Vec<Scenario> {
 
 #[test]
 fn no_disagreement_over_a_thousand_plans_from_every_planner() {
+    use rayon::prelude::*;
     const SEEDS: u64 = 160;
     let worlds = scenarios();
-    let mut total = 0;
-    for entry in PLANNERS {
-        // Graph and composite planners vary little with the seed: a few runs each.
-        let optimizer = entry.build.is_optimizer();
-        let seeds = if optimizer { SEEDS } else { 2 };
-        let mut feasible = 0;
-        let clock = std::time::Instant::now();
-        for s in &worlds {
-            for seed in 0..seeds {
-                // Short runs: many different plans, near the edge of feasibility.
-                let iterations = 6 + seed % 20;
-                let smoother = (seed % 3 == 0).then(|| "shortcut".to_string());
-                let req = PlanRequest {
-                    planner: Some(entry.id.into()),
-                    seed,
-                    // Short runs where the planner counts iterations.
-                    iterations: entry.build.caps.counts_unit(tidepath::planner::Unit::Iterations).then_some(iterations),
-                    smoother,
-                    ..PlanRequest::default()
-                };
-                // A planner may decline a world it does not cover (an input error saying so).
-                let Ok(r) = s.plan(&req, &mut |_| {}) else { break };
-                if r.status.is_success() {
-                    feasible += 1;
-                    if let Err(e) = common::recheck_plan(s, &r) {
-                        panic!("re-check disagrees with a feasible verdict: {e}");
+    // The planners run side by side (each plan itself on one thread): the runs are independent
+    // and the test's verdicts do not depend on their order.
+    let results: Vec<(&str, usize, usize, f64, bool)> = PLANNERS
+        .par_iter()
+        .map(|entry| {
+            // Graph and composite planners vary little with the seed: a few runs each.
+            let optimizer = entry.build.is_optimizer();
+            let seeds = if optimizer { SEEDS } else { 2 };
+            let mut feasible = 0;
+            let clock = std::time::Instant::now();
+            for s in &worlds {
+                for seed in 0..seeds {
+                    // Short runs: many different plans, near the edge of feasibility.
+                    let iterations = 6 + seed % 20;
+                    let smoother = (seed % 3 == 0).then(|| "shortcut".to_string());
+                    let req = PlanRequest {
+                        planner: Some(entry.id.into()),
+                        seed,
+                        // Short runs where the planner counts iterations.
+                        iterations: entry
+                            .build
+                            .caps
+                            .counts_unit(tidepath::planner::Unit::Iterations)
+                            .then_some(iterations),
+                        smoother,
+                        ..PlanRequest::default()
+                    };
+                    // A planner may decline a world it does not cover (an input error saying so).
+                    let Ok(r) = s.plan(&req, &mut |_| {}) else { break };
+                    if r.status.is_success() {
+                        feasible += 1;
+                        if let Err(e) = common::recheck_plan(s, &r) {
+                            panic!("re-check disagrees with a feasible verdict: {e}");
+                        }
                     }
                 }
             }
-        }
-        eprintln!(
-            "{}: {feasible} feasible plans re-checked of {} ({:.1} s)",
-            entry.id,
-            seeds as usize * worlds.len(),
-            clock.elapsed().as_secs_f64()
-        );
+            (entry.id, feasible, seeds as usize * worlds.len(), clock.elapsed().as_secs_f64(), optimizer)
+        })
+        .collect();
+    let mut total = 0;
+    for (id, feasible, runs, secs, optimizer) in results {
+        eprintln!("{id}: {feasible} feasible plans re-checked of {runs} ({secs:.1} s)");
         let wanted = if optimizer { 100 } else { 1 };
-        assert!(feasible >= wanted, "{}: only {feasible} feasible plans", entry.id);
+        assert!(feasible >= wanted, "{id}: only {feasible} feasible plans");
         total += feasible;
     }
     assert!(total >= 1000, "only {total} feasible plans re-checked");
