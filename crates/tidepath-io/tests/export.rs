@@ -186,6 +186,27 @@ fn control_characters_in_names_give_well_formed_xml() {
     assert!(csv.lines().nth(1).unwrap().starts_with("\"m\u{7}\"\"one\"\"\",0,"), "{csv}");
 }
 
+/// Plan `r` written in every export format and read back as routes (the way `eval` and
+/// `plan --init` read them): (extension, paths) per format.
+fn read_back_every_format(s: &Scenario, r: &PlanReport) -> Vec<(&'static str, Vec<Vec<tidepath::geom::Vec3>>)> {
+    let dir = tempfile::tempdir().unwrap();
+    [
+        ("json", ExportFormat::Json),
+        ("geojson", ExportFormat::GeoJson),
+        ("gpx", ExportFormat::Gpx),
+        ("kml", ExportFormat::Kml),
+        ("csv", ExportFormat::Csv),
+    ]
+    .into_iter()
+    .map(|(ext, f)| {
+        let path = dir.path().join(format!("route.{ext}"));
+        std::fs::write(&path, export(r, f, geo(s)).unwrap()).unwrap();
+        let file = tidepath_io::routes::read(&path).unwrap();
+        (ext, s.route_paths(&file, "route").unwrap())
+    })
+    .collect()
+}
+
 /// Every export is read back as a route (the way `eval` and `plan --init` read it) and gives
 /// the plan's points again, depth included: to a centimetre in latitude/longitude and depth.
 #[test]
@@ -195,18 +216,7 @@ fn every_export_reads_back_as_the_same_route() {
         let r = s.plan(&PlanRequest { seed: 1, ..PlanRequest::default() }, &mut |_| {}).unwrap();
         let want = r.missions[0].points();
         assert!(want.len() >= 2, "{name}: {}", r.reason);
-        let dir = tempfile::tempdir().unwrap();
-        for (ext, f) in [
-            ("json", ExportFormat::Json),
-            ("geojson", ExportFormat::GeoJson),
-            ("gpx", ExportFormat::Gpx),
-            ("kml", ExportFormat::Kml),
-            ("csv", ExportFormat::Csv),
-        ] {
-            let path = dir.path().join(format!("route.{ext}"));
-            std::fs::write(&path, export(&r, f, geo(&s)).unwrap()).unwrap();
-            let file = tidepath_io::routes::read(&path).unwrap();
-            let got = s.route_paths(&file, "route").unwrap();
+        for (ext, got) in read_back_every_format(&s, &r) {
             assert_eq!(got.len(), 1);
             assert_eq!(got[0].len(), want.len(), "{name} {ext}");
             for (p, q) in got[0].iter().zip(&want) {
@@ -388,18 +398,7 @@ fn exports_without_a_radius_have_no_flown_line() {
 fn every_export_with_a_radius_reads_back_as_the_waypoints() {
     let (s, r) = planned_with_radius("salish", 500.0, Some("2025-11-12T06:00:00Z"));
     let want = r.missions[0].points();
-    let dir = tempfile::tempdir().unwrap();
-    for (ext, f) in [
-        ("json", ExportFormat::Json),
-        ("geojson", ExportFormat::GeoJson),
-        ("gpx", ExportFormat::Gpx),
-        ("kml", ExportFormat::Kml),
-        ("csv", ExportFormat::Csv),
-    ] {
-        let path = dir.path().join(format!("route.{ext}"));
-        std::fs::write(&path, export(&r, f, geo(&s)).unwrap()).unwrap();
-        let file = tidepath_io::routes::read(&path).unwrap();
-        let got = s.route_paths(&file, "route").unwrap();
+    for (ext, got) in read_back_every_format(&s, &r) {
         assert_eq!(got.len(), 1, "{ext}");
         assert_eq!(got[0].len(), want.len(), "{ext}");
         for (p, q) in got[0].iter().zip(&want) {

@@ -98,18 +98,7 @@ impl PathModel<'_> {
                     out.pitch_excess += dir.z.abs().atan2(h_len) - veh.max_pitch;
                 }
             }
-            // A segment without horizontal extent keeps the previous heading.
-            if h_len > 0.0 {
-                if let Some((ph, ph_len)) = prev_h {
-                    let c = turn_cos(ph, ph_len, h, h_len);
-                    min_cos_turn = min_cos_turn.min(c);
-                    if c < cos_turn_limit {
-                        out.turn_violations += 1;
-                        out.turn_excess += c.acos() - veh.max_turn;
-                    }
-                }
-                prev_h = Some((h, h_len));
-            }
+            joint(&mut out, &mut prev_h, &mut min_cos_turn, (h, h_len), cos_turn_limit, veh.max_turn);
         }
         out.max_turn = min_cos_turn.acos();
         out.max_pitch = max_slope.atan();
@@ -137,6 +126,32 @@ impl PathModel<'_> {
             })
         };
         out.endpoint_violations = u32::from(off(points.first(), self.start)) + u32::from(off(points.last(), self.goal));
+    }
+}
+
+/// One joint's waypoint angle check: the heading change from the previous segment with
+/// horizontal extent to this one (`h`, of length `h_len`) counted against the limit, and the
+/// smallest cosine so far kept. A segment without horizontal extent keeps the previous heading.
+/// Shared by the polyline and the flown-curve assessments.
+#[inline]
+pub(super) fn joint(
+    out: &mut Assessment,
+    prev_h: &mut Option<(Vec2, f64)>,
+    min_cos_turn: &mut f64,
+    (h, h_len): (Vec2, f64),
+    cos_turn_limit: f64,
+    max_turn: f64,
+) {
+    if h_len > 0.0 {
+        if let Some((ph, ph_len)) = *prev_h {
+            let c = turn_cos(ph, ph_len, h, h_len);
+            *min_cos_turn = min_cos_turn.min(c);
+            if c < cos_turn_limit {
+                out.turn_violations += 1;
+                out.turn_excess += c.acos() - max_turn;
+            }
+        }
+        *prev_h = Some((h, h_len));
     }
 }
 

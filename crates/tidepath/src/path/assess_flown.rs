@@ -1,7 +1,7 @@
 //! [`PathModel::assess`] and [`PathModel::violations`] for a vehicle with a turning radius:
 //! the same verdicts, judged on the flown curve (see [`super::flown`]).
 
-use super::assess::{turn_cos, Assessment};
+use super::assess::{joint, Assessment};
 use super::violations::{motion_issue_text, Violation, ViolationKind};
 use super::PathModel;
 use crate::geom::{Vec2, Vec3};
@@ -85,18 +85,7 @@ impl PathModel<'_> {
         let mut prev_h: Option<(Vec2, f64)> = None;
         for w in points.windows(2) {
             let h = (w[1] - w[0]).truncate();
-            let h_len = h.length();
-            if h_len > 0.0 {
-                if let Some((ph, ph_len)) = prev_h {
-                    let c = turn_cos(ph, ph_len, h, h_len);
-                    min_cos_turn = min_cos_turn.min(c);
-                    if c < cos_turn_limit {
-                        out.turn_violations += 1;
-                        out.turn_excess += c.acos() - self.vehicle.max_turn;
-                    }
-                }
-                prev_h = Some((h, h_len));
-            }
+            joint(out, &mut prev_h, &mut min_cos_turn, (h, h.length()), cos_turn_limit, self.vehicle.max_turn);
         }
         out.max_turn = min_cos_turn.acos();
     }
