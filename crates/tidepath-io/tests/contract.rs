@@ -127,6 +127,7 @@ mod short {
                 paths,
                 claim: None,
                 stats: SearchStats { stop_reason: StopReason::WallTime, ..SearchStats::default() },
+                graphs: Vec::new(),
             }
         }
     }

@@ -97,6 +97,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         smoother_params,
         init,
         stop: Some(crate::stop_flag()),
+        record_graph: false,
     };
     scenario.check_request(&req)?;
     let reference_req = args.reference.as_ref().map(|id| PlanRequest {

@@ -66,6 +66,8 @@ pub struct PlanRequest {
     pub init: Option<Vec<Vec<Vec3>>>,
     /// Raised by the caller to stop the run (Ctrl-C).
     pub stop: Option<Arc<AtomicBool>>,
+    /// Keep the planner's search graph (tree or roadmap) in the report (`plan --graph`).
+    pub record_graph: bool,
 }
 
 /// The component tables a plan draws on: the built-in planners and smoothers by default; a
@@ -270,7 +272,7 @@ impl Scenario {
         let Prepared { mut planner, termination, limit_source, cost, smoother } = self.prepare(c, req)?;
         let problem = self.problem(cost.as_ref());
         let options = SolveOptions {
-            run: RunOptions { init: req.init.as_deref(), parallel: req.parallel },
+            run: RunOptions { init: req.init.as_deref(), parallel: req.parallel, record_graph: req.record_graph },
             smoother: smoother.as_deref(),
         };
         let mut rng = run_rng(req.seed, req.run);

@@ -190,7 +190,12 @@ impl Planner for Hybrid {
         let objective = PathObjective::new(problem, encodings);
         let claim = no_route.iter().any(Option::is_some).then_some(Claim::NoRoute(no_route));
         let Some(base) = objective.encode(&seeds_pts) else {
-            return PlannerOutput { paths: refs, claim, stats: SearchStats { expansions, ..SearchStats::default() } };
+            return PlannerOutput {
+                paths: refs,
+                claim,
+                stats: SearchStats { expansions, ..SearchStats::default() },
+                graphs: Vec::new(),
+            };
         };
         // The reference and jittered copies (up to about one raster cell, in the encoding's
         // normalised units).
@@ -229,6 +234,7 @@ impl Planner for Hybrid {
                 elapsed: watch.elapsed(),
                 ..SearchStats::default()
             },
+            graphs: Vec::new(),
         }
     }
 }

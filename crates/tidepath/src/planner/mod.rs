@@ -124,12 +124,31 @@ impl Default for SearchStats {
 }
 
 /// A planner's raw result: one path per mission (start and goal included; empty when none was
-/// found), a claim, and the search statistics.
-#[derive(Clone, Debug, PartialEq)]
+/// found), a claim, the search statistics and, when asked for, the graphs it searched.
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct PlannerOutput {
     pub paths: Vec<Vec<Vec3>>,
     pub claim: Option<Claim>,
     pub stats: SearchStats,
+    /// The tree or roadmap of each mission, when [`RunOptions::record_graph`] asked for it and
+    /// the planner builds one (sampling planners); empty otherwise.
+    pub graphs: Vec<SearchGraph>,
+}
+
+/// The graph a planner built for one mission (OMPL's `PlannerData` is the model): its
+/// vertices and edges, for `plan --graph` and for figures that draw it under the path.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SearchGraph {
+    /// The mission it belongs to (index into the problem's missions).
+    pub mission: usize,
+    /// "tree" (RRT*: every edge goes from parent to child) or "roadmap" (PRM*: undirected).
+    pub kind: &'static str,
+    pub vertices: Vec<Vec3>,
+    /// Pairs of vertex indices; in a tree, (parent, child).
+    pub edges: Vec<[u32; 2]>,
+    /// The start's vertex, and the goal's when the graph reached it.
+    pub start: Option<u32>,
+    pub goal: Option<u32>,
 }
 
 /// Run options that change no result.
@@ -140,6 +159,8 @@ pub struct RunOptions<'a> {
     pub init: Option<&'a [Vec<Vec3>]>,
     /// Evaluate populations on the rayon pool; results are identical either way.
     pub parallel: bool,
+    /// Keep the search graph (tree or roadmap) in [`PlannerOutput::graphs`].
+    pub record_graph: bool,
 }
 
 pub trait Planner: Send {

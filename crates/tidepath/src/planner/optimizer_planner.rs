@@ -91,6 +91,7 @@ impl Planner for OptimizerPlanner {
                 paths: vec![Vec::new(); problem.missions.len()],
                 claim: None,
                 stats: SearchStats::default(),
+                graphs: Vec::new(),
             };
         };
         let objective = PathObjective::new(problem, encodings);
@@ -117,6 +118,7 @@ impl Planner for OptimizerPlanner {
                 elapsed: r.elapsed,
                 ..SearchStats::default()
             },
+            graphs: Vec::new(),
         }
     }
 }

@@ -3,7 +3,7 @@
 //! the status from those direct checks.
 
 use super::reachability::{self, Bottleneck, Reachability};
-use super::{Claim, Planner, Problem, RunOptions, SearchStats, Status};
+use super::{Claim, Planner, Problem, RunOptions, SearchGraph, SearchStats, Status};
 use crate::error::Result;
 use crate::geom::Vec3;
 use crate::mission::Mission;
@@ -98,6 +98,9 @@ pub struct Plan {
     /// Sum of the missions' costs.
     pub cost: f64,
     pub stats: SearchStats,
+    /// The search graphs the planner kept ([`RunOptions::record_graph`]), each naming its
+    /// mission by its index in the problem.
+    pub graphs: Vec<SearchGraph>,
 }
 
 impl Plan {
@@ -184,6 +187,7 @@ pub fn solve(
     }
     let planned: Vec<usize> = (0..n).filter(|&i| refused[i].is_none()).collect();
     let mut stats = SearchStats::default();
+    let mut graphs = Vec::new();
     let mut missions: Vec<MissionPlan> = problem
         .missions
         .iter()
@@ -235,6 +239,11 @@ pub fn solve(
         }
         stats = out.stats;
         claim = out.claim;
+        // The planner numbered its missions within the subset it saw.
+        graphs = out.graphs;
+        for g in &mut graphs {
+            g.mission = planned.get(g.mission).copied().unwrap_or(g.mission);
+        }
     }
     // Each planned mission's status from its own direct checks and why the run stopped.
     for (k, &i) in planned.iter().enumerate() {
@@ -305,7 +314,7 @@ pub fn solve(
     }
     let cost = missions.iter().map(|m| m.cost).sum();
     let (status, reason) = overall(&missions);
-    Ok(Plan { planner: id, status, reason, missions, cost, stats })
+    Ok(Plan { planner: id, status, reason, missions, cost, stats, graphs })
 }
 
 /// The plan's status: the worst of its missions'; the reason is that mission's, named when

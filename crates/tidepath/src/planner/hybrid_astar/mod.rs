@@ -198,7 +198,7 @@ impl Planner for HybridAstar {
             };
             Claim::Hint(hint)
         };
-        PlannerOutput { paths, claim: Some(claim), stats }
+        PlannerOutput { paths, claim: Some(claim), stats, graphs: Vec::new() }
     }
 }
 
