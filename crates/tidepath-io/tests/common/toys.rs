@@ -80,6 +80,7 @@ pub const STRAIGHT: Entry<BuildPlanner> = Entry {
             counts: &[],
             optimal: None,
             randomised: false,
+            graph: false,
         },
         |s| Ok(Box::new(StraightLine { params: StraightParams::from_table(&s.params, &s.prefix)?.into_inner() })),
     ),

@@ -65,6 +65,10 @@ pub struct Capabilities {
     pub optimal: Option<&'static str>,
     /// Its result depends on the seed.
     pub randomised: bool,
+    /// Builds a search graph (a tree or a roadmap) it can give back when a run asks for it
+    /// ([`super::RunOptions::record_graph`], `plan --graph`); a request for the graph of a
+    /// planner without one is refused before planning.
+    pub graph: bool,
 }
 
 impl Capabilities {
@@ -76,6 +80,7 @@ impl Capabilities {
         counts: &[Unit::Iterations, Unit::Evaluations],
         optimal: None,
         randomised: true,
+        graph: false,
     };
 
     pub fn counts_unit(&self, unit: Unit) -> bool {
@@ -109,8 +114,12 @@ impl fmt::Display for Capabilities {
         let seed = if self.randomised { "randomised" } else { "deterministic" };
         write!(f, "{dims}; {fleets}; {warm}; counts {}; {seed}", self.counts_text())?;
         match self.optimal {
-            Some(o) => write!(f, "; exact for {o}"),
-            None => f.write_str("; never exact"),
+            Some(o) => write!(f, "; exact for {o}")?,
+            None => f.write_str("; never exact")?,
         }
+        if self.graph {
+            f.write_str("; draws its search graph (--graph)")?;
+        }
+        Ok(())
     }
 }

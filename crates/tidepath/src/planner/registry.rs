@@ -68,6 +68,7 @@ const GRID: Capabilities = Capabilities {
     counts: &[Unit::Expansions],
     optimal: Some("the scenario's cost model on its raster, in worlds that do not change in time (astar only)"),
     randomised: false,
+    graph: false,
 };
 
 pub const PLANNERS: &[Entry<BuildPlanner>] = &[
@@ -123,6 +124,7 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
                 counts: &[],
                 optimal: Some("the scenario's cost model over all paths in the plane, in still water (a cost per metre)"),
                 randomised: false,
+                graph: false,
             },
             |s| {
                 super::visibility::VisibilityParams::from_table(&s.params, &s.prefix)?;
@@ -153,6 +155,7 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
                 counts: &[Unit::Expansions],
                 optimal: None,
                 randomised: false,
+                graph: false,
             },
             |s| {
                 let p = super::hybrid_astar::HybridAstarParams::from_table(&s.params, &s.prefix)?;
