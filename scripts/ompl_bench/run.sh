@@ -124,15 +124,19 @@ run_ompl() { # world seed order k_nearest(1: OMPL's default, 0: the radius form)
     # tidepath's own check of OMPL's path on the scenario: exact segment-disc tests.
     verdict=none
     if [ "$solved" = 1 ]; then
-        verdict=$("$tidepath" eval "$out/worlds/$w.toml" "$path" | sed -n 's/^ *verdict: //p')
+        # (eval exits non-zero on an infeasible path: the verdict says which)
+        verdict=$("$tidepath" eval "$out/worlds/$w.toml" "$path" | sed -n 's/^ *verdict: //p' || true)
     fi
+    verdict=${verdict%%,*}  # "NOT feasible, 1 violation(s): ..." -> "NOT feasible"
     echo "$w,$s,$order,$label,$it,$t,$len,$exact,${verdict// /_},$verts" >> "$results"
 }
 run_tidepath() { # world seed order
     local w=$1 s=$2 order=$3 plan
     plan="$runs/tidepath_${w}_s$s.json"
+    rm -f "$plan"
+    # (plan exits non-zero when the tree did not reach the goal; the plan JSON says so)
     "$tidepath" plan "$out/worlds/$w.toml" --planner rrt-star --samples "$iterations" --seed "$s" --jobs 1 \
-        --out "$plan" > "$runs/tidepath_${w}_s$s.txt"
+        --out "$plan" > "$runs/tidepath_${w}_s$s.txt" || [ -s "$plan" ]
     python3 - "$plan" "$w" "$s" "$order" >> "$results" <<'EOF'
 import json, sys
 plan = json.load(open(sys.argv[1]))
