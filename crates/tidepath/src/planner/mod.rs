@@ -16,6 +16,7 @@ mod optimizer_planner;
 pub mod raster_search;
 pub mod reachability;
 pub mod registry;
+pub mod sampling;
 mod sliced_hint;
 pub mod solve;
 mod status;

@@ -71,6 +71,17 @@ const GRID: Capabilities = Capabilities {
     graph: false,
 };
 
+/// The sampling planners' capabilities.
+const SAMPLING: Capabilities = Capabilities {
+    dimensions: Dimensions::Both,
+    fleets: Fleets::OneAfterAnother,
+    warm_start: true,
+    counts: &[Unit::Samples],
+    optimal: None,
+    randomised: true,
+    graph: true,
+};
+
 pub const PLANNERS: &[Entry<BuildPlanner>] = &[
     Entry {
         id: "pso",
@@ -162,6 +173,33 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
                 Ok(Box::new(super::hybrid_astar::HybridAstar::new(p)))
             },
         ),
+    },
+    Entry {
+        id: "rrt-star",
+        description: "RRT*: a tree of samples rewired towards the cheapest path, edges priced by the scenario's cost at the vehicle's clock",
+        citation: "Karaman & Frazzoli 2011; baseline in lfhh2019",
+        params: super::sampling::RrtStarParams::SPECS,
+        build: BuildPlanner::direct(SAMPLING, |s| {
+            Ok(Box::new(super::sampling::RrtStar::new(super::sampling::RrtStarParams::from_table(&s.params, &s.prefix)?, false)))
+        }),
+    },
+    Entry {
+        id: "informed-rrt-star",
+        description: "Informed RRT*: RRT* that samples only where a shorter path can pass once it has one (costs proportional to length; whole space otherwise)",
+        citation: "Gammell, Srinivasa & Barfoot 2014",
+        params: super::sampling::RrtStarParams::SPECS,
+        build: BuildPlanner::direct(SAMPLING, |s| {
+            Ok(Box::new(super::sampling::RrtStar::new(super::sampling::RrtStarParams::from_table(&s.params, &s.prefix)?, true)))
+        }),
+    },
+    Entry {
+        id: "prm-star",
+        description: "PRM*: a roadmap of samples joined within the shrinking radius, searched by A* under the scenario's cost at the vehicle's clock",
+        citation: "Karaman & Frazzoli 2011; baseline in lfhh2019",
+        params: super::sampling::PrmStarParams::SPECS,
+        build: BuildPlanner::direct(SAMPLING, |s| {
+            Ok(Box::new(super::sampling::PrmStar::new(super::sampling::PrmStarParams::from_table(&s.params, &s.prefix)?)))
+        }),
     },
 ];
 

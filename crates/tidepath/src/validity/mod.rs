@@ -377,6 +377,34 @@ impl<'a> Validator<'a> {
         out
     }
 
+    /// The farthest point p of a -> b such that the motion a -> p leaving at `t0` is valid,
+    /// to within `resolution` metres, and the motion checks it took (OMPL's
+    /// `checkMotion(s1, s2, lastValid)` is the model). Sampling planners extend a blocked edge
+    /// this far. `None` when a -> b is valid (nothing to cut) or when no prefix longer than
+    /// `resolution` was found valid.
+    ///
+    /// Bisection on the fraction of the segment: every point returned is the end of a motion
+    /// [`Validator::motion`] judged valid, so the cut edge is valid however the blocked part
+    /// looks (several obstacles, a gap in the current). About log2(|ab| / resolution) checks.
+    pub fn last_valid(&self, a: Vec3, b: Vec3, t0: f64, resolution: f64) -> (Option<Vec3>, u32) {
+        let len = a.distance(b);
+        let mut checks = 1;
+        if self.motion(a, b, t0).valid() || !(len > resolution) {
+            return (None, checks);
+        }
+        let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+        while (hi - lo) * len > resolution {
+            let mid = 0.5 * (lo + hi);
+            checks += 1;
+            if self.motion(a, a.lerp(b, mid), t0).valid() {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        ((lo * len >= resolution).then(|| a.lerp(b, lo)), checks)
+    }
+
     /// Smallest clearance of the motion a -> b leaving at `t0`: vertical to the seabed
     /// (negative below it) and Euclidean to obstacle surfaces, moving ones at the vehicle's
     /// clock. +inf in an empty world.

@@ -202,3 +202,26 @@ fn current_gaps_refuse_states_and_motions_that_need_them() {
     assert!(val.motion(Vec3::new(50.0, 0.0, -50.0), Vec3::new(50.0, 400.0, -50.0), 0.0).valid());
     assert!(!val.motion(Vec3::new(250.0, 250.0, -50.0), Vec3::new(250.0, 250.0, -50.0), 0.0).valid());
 }
+
+/// A blocked motion is cut at its last valid point, to within the resolution, and the cut
+/// motion is itself valid: a sphere of radius 10 at x = 300 with a 5 m safety distance blocks
+/// the line y = 100 from x = 285 on (hand-computed).
+#[test]
+fn a_blocked_motion_is_cut_at_its_last_valid_point() {
+    let mut w = world();
+    w.obstacles.push(Obstacle::fixed(Shape::Sphere { center: Vec3::new(300.0, 100.0, -50.0), radius: 10.0 }));
+    let (v, s) = (vehicle(), ModelSettings::default());
+    let val = Validator::new(&w, &v, &s);
+    let (a, b) = (Vec3::new(100.0, 100.0, -50.0), Vec3::new(400.0, 100.0, -50.0));
+    for res in [25.0, 1.0, 0.01] {
+        let (p, checks) = val.last_valid(a, b, 0.0, res);
+        let p = p.unwrap();
+        assert!(p.x <= 285.0 && p.x > 285.0 - res, "resolution {res}: cut at {p}");
+        assert!(val.motion(a, p, 0.0).valid());
+        // About log2(300 / res) bisections, plus the first check.
+        assert!(checks as f64 <= (300.0_f64 / res).log2().ceil() + 2.0, "{checks} checks at {res}");
+    }
+    // A valid motion is not cut; a motion blocked within the resolution of its start has no cut.
+    assert_eq!(val.last_valid(a, Vec3::new(200.0, 100.0, -50.0), 0.0, 1.0).0, None);
+    assert_eq!(val.last_valid(Vec3::new(284.5, 100.0, -50.0), b, 0.0, 1.0).0, None);
+}
