@@ -318,7 +318,7 @@ fn round7(v: f64) -> f64 {
 /// Text that XML 1.0 can hold: characters it forbids even escaped (control characters other
 /// than tab, newline and carriage return) are written as visible escapes, `\u{1b}`; the
 /// writer escapes markup (`&`, `<`, ...).
-fn xml_text(s: &str) -> String {
+pub(crate) fn xml_text(s: &str) -> String {
     let legal = |c: char| matches!(c, '\t' | '\n' | '\r') || (c >= ' ' && !matches!(c, '\u{FFFE}' | '\u{FFFF}'));
     if s.chars().all(legal) {
         return s.to_string();

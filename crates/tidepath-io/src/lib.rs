@@ -5,6 +5,7 @@
 //! * [`geodata`]: bathymetry (NetCDF, GeoTIFF, ESRI ASCII) and current forecasts (NetCDF),
 //!   read only inside the box a scenario needs;
 //! * [`plan_json`]: the plan file `plan --out` writes and `eval` and `plan --init` read;
+//! * [`graph_file`]: a planner's search graphs as `plan --graph` writes them (GraphML, JSON);
 //! * [`export`]: GIS exports (GeoJSON, CSV, KML, GPX), written with `geojson`, `csv` and
 //!   `quick-xml` ([`csv_table`] is the one CSV writer);
 //! * [`input`], [`output`]: input files read defensively, output files written all or none.
@@ -15,6 +16,7 @@
 pub mod csv_table;
 pub mod export;
 pub mod geodata;
+pub mod graph_file;
 pub mod input;
 pub mod output;
 pub mod plan_json;
@@ -22,4 +24,4 @@ pub mod routes;
 pub mod scenario;
 
 pub use output::{write_atomic, OutputId, Outputs};
-pub use plan_json::{MissionReport, PlanAbout, PlanFile, PlanReport, RouteFrame, PLAN_FORMAT_VERSION};
+pub use plan_json::{GraphReport, MissionReport, PlanAbout, PlanFile, PlanReport, RouteFrame, PLAN_FORMAT_VERSION};

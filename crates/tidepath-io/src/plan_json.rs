@@ -160,6 +160,57 @@ pub struct PlanReport {
     /// mission's path in longitude/latitude.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub geographic: Option<GeoReport>,
+    /// The search graphs the planner kept when the run asked for them (`plan --graph`,
+    /// `--plot-graph`), one per planned mission of a planner that builds one. Never written to
+    /// the plan file (a graph can have 100 000 edges): [`crate::graph_file`] writes them.
+    #[serde(skip)]
+    pub graphs: Vec<GraphReport>,
+}
+
+/// One mission's search graph (a tree or a roadmap), as `plan --graph` writes it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GraphReport {
+    /// The mission's name.
+    pub mission: String,
+    /// "tree" (every edge from parent to child) or "roadmap" (undirected edges).
+    pub kind: String,
+    /// [x, y, z] in metres, the scenario's frame.
+    pub vertices: Vec<[f64; 3]>,
+    /// Pairs of indices into `vertices`; in a tree, (parent, child).
+    pub edges: Vec<[u32; 2]>,
+    /// The start's vertex, and the goal's when the graph reached it.
+    pub start: Option<u32>,
+    pub goal: Option<u32>,
+    /// In a geographic scenario, each vertex as [longitude, latitude, depth_m] (depth positive
+    /// down), like `geographic.paths`.
+    pub lonlat: Option<Vec<[f64; 3]>>,
+}
+
+impl GraphReport {
+    fn new(g: &tidepath::planner::SearchGraph, missions: &[MissionPlan]) -> Self {
+        Self {
+            mission: missions.get(g.mission).map_or_else(|| format!("mission {}", g.mission), |m| m.name.clone()),
+            kind: g.kind.to_string(),
+            vertices: points(&g.vertices),
+            edges: g.edges.clone(),
+            start: g.start,
+            goal: g.goal,
+            lonlat: None,
+        }
+    }
+
+    /// Whether edges have a direction (a tree's go from parent to child).
+    pub fn directed(&self) -> bool {
+        self.kind == "tree"
+    }
+
+    /// The length (m) of edge `e`; NaN when an index is out of range.
+    pub fn edge_length(&self, e: [u32; 2]) -> f64 {
+        match (self.vertices.get(e[0] as usize), self.vertices.get(e[1] as usize)) {
+            (Some(a), Some(b)) => Vec3::from_array(*a).distance(Vec3::from_array(*b)),
+            _ => f64::NAN,
+        }
+    }
 }
 
 /// Where a geographic plan's metres and seconds are on the Earth and the calendar.
@@ -253,6 +304,7 @@ impl PlanReport {
             default_time_cap: about.default_time_cap,
             history: s.history.iter().map(|h| finite(*h)).collect(),
             geographic: None,
+            graphs: plan.graphs.iter().map(|g| GraphReport::new(g, &plan.missions)).collect(),
         }
     }
 
@@ -272,6 +324,10 @@ impl PlanReport {
                     .collect()
             };
             let paths = self.missions.iter().map(|m| degrees(&m.points())).collect();
+            for g in &mut self.graphs {
+                let vertices: Vec<Vec3> = g.vertices.iter().map(|p| Vec3::from_array(*p)).collect();
+                g.lonlat = Some(degrees(&vertices));
+            }
             let flown = self
                 .missions
                 .iter()

@@ -9,7 +9,7 @@ use super::convergence::{draw_convergence, ConvergenceSeries};
 use super::plan_view::draw_plan_view;
 use super::profile::draw_profile;
 use super::style::{self, plot_err};
-use super::PlotPath;
+use super::{PlotGraph, PlotPath};
 use tidepath::error::{Error, Result};
 use tidepath::geom::Vec3;
 use tidepath::planner::Focus;
@@ -53,6 +53,9 @@ pub struct PlanFigure<'a> {
     /// What iteration 0 of the histories is when something ran before the iterations (a
     /// composite planner's reference search, a warm start), marked on the convergence panel.
     pub history_start: Option<String>,
+    /// The planner's search graphs (`plan --graph`, `--plot-graph`), drawn faintly under the
+    /// obstacles' outlines and the paths on the plan view; may be empty.
+    pub graphs: Vec<PlotGraph<'a>>,
 }
 
 impl<'a> PlanFigure<'a> {
@@ -71,6 +74,7 @@ impl<'a> PlanFigure<'a> {
             reference: None,
             histories: Vec::new(),
             history_start: None,
+            graphs: Vec::new(),
         }
     }
 }

@@ -57,6 +57,19 @@ pub struct FlownLine<'a> {
     pub radius: f64,
 }
 
+/// A planner's search graph (a tree or a roadmap), drawn faintly under the paths.
+#[derive(Clone, Copy, Debug)]
+pub struct PlotGraph<'a> {
+    /// The mission it belongs to, named in the legend when a plan has several.
+    pub label: Option<&'a str>,
+    /// "tree" or "roadmap".
+    pub kind: &'a str,
+    /// [x, y, z] in metres; the plan view draws x and y.
+    pub vertices: &'a [[f64; 3]],
+    /// Pairs of indices into `vertices`.
+    pub edges: &'a [[u32; 2]],
+}
+
 impl<'a> PlotPath<'a> {
     pub fn new(label: impl Into<String>, points: &'a [Vec3]) -> Self {
         Self { label: label.into(), points, times: &[], violations: &[], flown: None }

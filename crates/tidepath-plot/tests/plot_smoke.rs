@@ -106,6 +106,7 @@ fn rich_world_figure_has_all_panels() {
         focus: vec![],
         reference: None,
         history_start: None,
+        graphs: vec![],
         paths: vec![PlotPath::new("pso", &a), PlotPath::new("straight", &b)],
         histories: vec![("pso".into(), &history)],
     };
@@ -141,6 +142,7 @@ fn bare_world_with_empty_history_and_single_point_path() {
         focus: vec![],
         reference: None,
         history_start: None,
+        graphs: vec![],
         paths: vec![PlotPath::new("direct", &path), PlotPath::new("one point", &lonely)],
         histories: vec![],
     };
@@ -178,6 +180,7 @@ fn two_d_world_with_uniform_current_and_flat_history() {
         focus: vec![],
         reference: None,
         history_start: None,
+        graphs: vec![],
         paths: vec![PlotPath::new("de", &path)],
         histories: vec![("de".into(), &flat)],
     };
@@ -227,6 +230,7 @@ fn tall_grid_world_with_many_planners_and_moving_obstacles() {
         focus: vec![],
         reference: None,
         history_start: None,
+        graphs: vec![],
         paths: paths.iter().zip(names).map(|(p, n)| PlotPath::new(n, p)).collect(),
         histories: histories.iter().zip(names).map(|(h, n)| (n.to_string(), h.as_slice())).collect(),
     };

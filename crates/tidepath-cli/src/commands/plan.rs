@@ -3,9 +3,10 @@ use std::path::PathBuf;
 use clap::Args;
 use tidepath::Error;
 use tidepath_io::export::{export, ExportFormat, Georef};
+use tidepath_io::graph_file::{self, GraphFormat};
 use tidepath_io::scenario::{self, PlanRequest, Scenario};
 use tidepath_io::{Outputs, PlanReport};
-use tidepath_plot::{render_plan_figure, PlanFigure, PlotPath};
+use tidepath_plot::{render_plan_figure, PlanFigure, PlotGraph, PlotPath};
 
 use crate::progress::DelayedBar;
 use crate::Outcome;
@@ -47,6 +48,14 @@ pub struct PlanArgs {
     /// Write an SVG figure here: plan view, vertical profile and convergence.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Write the planner's search graph (its tree or roadmap, one per mission) here: .graphml
+    /// or .json by the extension. Only planners that build one (see `tidepath planners`).
+    #[arg(long)]
+    pub graph: Option<PathBuf>,
+    /// Draw the planner's search graph faintly under the paths of the --plot figure (also
+    /// drawn whenever --graph is given with --plot).
+    #[arg(long)]
+    pub plot_graph: bool,
 }
 
 pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
@@ -66,7 +75,12 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     let mut outputs = Outputs::new();
     let out_id = args.out.as_deref().map(|p| outputs.declare("--out", p)).transpose()?;
     let plot_id = args.plot.as_deref().map(|p| outputs.declare("--plot", p)).transpose()?;
+    let graph_id = args.graph.as_deref().map(|p| outputs.declare("--graph", p)).transpose()?;
     let out_format = args.out.as_deref().map(|p| ExportFormat::of(p, "--out")).transpose()?;
+    let graph_format = args.graph.as_deref().map(|p| GraphFormat::of(p, "--graph")).transpose()?;
+    if args.plot_graph && args.plot.is_none() {
+        return Err(Error::input("--plot-graph", "draws on the --plot figure; give --plot FILE.svg too"));
+    }
     if let Some(f) = out_format {
         f.check(scenario.frame.as_ref(), "--out")?;
     }
@@ -97,9 +111,13 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         smoother_params,
         init,
         stop: Some(crate::stop_flag()),
-        record_graph: false,
+        record_graph: args.graph.is_some() || args.plot_graph,
     };
-    scenario.check_request(&req)?;
+    scenario.check_request(&req).map_err(|e| match &e {
+        // Only --plot-graph asked for the graph: the refusal names it.
+        Error::Input { field, .. } if field == "--graph" && args.graph.is_none() => e.for_field("--plot-graph"),
+        _ => e,
+    })?;
     let reference_req = args.reference.as_ref().map(|id| PlanRequest {
         planner: Some(id.clone()),
         seed: args.run.seed,
@@ -126,6 +144,9 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     if let (Some(id), Some(format)) = (out_id, out_format) {
         let geo = Georef { frame: scenario.frame.as_ref(), epoch: scenario.epoch };
         outputs.fill(id, export(&report, format, geo)?);
+    }
+    if let (Some(id), Some(format)) = (graph_id, graph_format) {
+        outputs.fill(id, graph_file::write(&report, format)?);
     }
     if let Some(id) = plot_id {
         outputs.fill(id, figure(&scenario, &report, reference.as_ref())?);
@@ -201,6 +222,17 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
                 Some((points, times, r)) => path.with_flown(points, times, *r),
                 None => path,
             }
+        })
+        .collect();
+    // The search graph, faintly under everything the run found.
+    fig.graphs = report
+        .graphs
+        .iter()
+        .map(|g| PlotGraph {
+            label: (report.graphs.len() > 1).then_some(g.mission.as_str()),
+            kind: &g.kind,
+            vertices: &g.vertices,
+            edges: &g.edges,
         })
         .collect();
     fig.reference = reference

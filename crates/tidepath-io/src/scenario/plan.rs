@@ -158,8 +158,14 @@ impl Scenario {
 
     /// Refuses, naming the flag, what planner `id` cannot honour: a count in a unit it does not
     /// count, a population it does not have, a warm start it does not use, a world it does not
-    /// plan in.
-    fn check_capabilities(&self, entry: &Entry<BuildPlanner>, req: &PlanRequest) -> Result<()> {
+    /// plan in, a search graph it does not build (the planners of `planners` that do are
+    /// named).
+    fn check_capabilities(
+        &self,
+        planners: &Registry<BuildPlanner>,
+        entry: &Entry<BuildPlanner>,
+        req: &PlanRequest,
+    ) -> Result<()> {
         let caps = &entry.build.caps;
         let id = entry.id;
         let flags = [req.iterations, req.evaluations, req.expansions, req.samples];
@@ -186,6 +192,15 @@ impl Scenario {
         }
         if req.init.is_some() && !caps.warm_start {
             return Err(Error::input("--init", format!("{id} takes no warm start")));
+        }
+        if req.record_graph && !caps.graph {
+            let builders: Vec<&str> = planners.entries().iter().filter(|e| e.build.caps.graph).map(|e| e.id).collect();
+            let which = if builders.is_empty() {
+                "and no planner of this build does".to_string()
+            } else {
+                format!("planners that do: {}", builders.join(", "))
+            };
+            return Err(Error::input("--graph", format!("{id} builds no search graph; {which}")));
         }
         if !caps.dimensions.covers(self.world.dims) {
             return Err(Error::input("planner", format!("{id} plans 2-D worlds only; use theta-star or hybrid")));
@@ -223,7 +238,7 @@ impl Scenario {
         let planners = &c.planners;
         let id = req.planner.clone().unwrap_or_else(|| self.planner.id.clone());
         let entry = *planners.get(&id)?;
-        self.check_capabilities(&entry, req)?;
+        self.check_capabilities(planners, &entry, req)?;
         // The scenario's population is a default for planners that have one.
         let population = req.population.or(self.planner.population.filter(|_| entry.has_param("population")));
         let planner = planners.build(&id, self.planner.params.get(&id), population, &self.encoding)?;

@@ -4,6 +4,7 @@
 //! distances to obstacles), so the plot size is computed here from the available area rather
 //! than left to plotters.
 
+mod graph;
 mod graticule;
 mod obstacles;
 mod overlays;
@@ -208,6 +209,8 @@ pub fn draw_plan_view<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &P
             }
         }
     }
+    // The search graph under the obstacles' outlines and the paths, which stay readable.
+    graph::draw_graphs(&chart, fig, u)?;
     let warn: Vec<usize> = fig.focus.iter().flat_map(|f| failure::obstacles_at(fig, f)).collect();
     draw_obstacles(&chart, fig, u, &warn)?;
     if halos {
@@ -311,6 +314,7 @@ fn legend_entries(
     }
     out.push(LegendEntry::new("start", Swatch::Marker(Marker::Triangle, style::START)));
     out.push(LegendEntry::new("goal", Swatch::Marker(Marker::Star, style::GOAL)));
+    out.extend(graph::legend_entries(fig));
     let (seg, way) = failure::kinds(paths);
     if !seg.is_empty() {
         out.push(LegendEntry::new(failure::legend_text("violated segment", &seg), Swatch::Band(style::WARN.mix(0.65))));
