@@ -2,10 +2,12 @@
 # OMPL's RRT* (Debian's libompl-dev, native C++) and tidepath's rrt-star on the same seeded
 # random-disc worlds, back to back on this machine. See docs/ompl-benchmark.md.
 #
-#   scripts/ompl_bench/run.sh [--quick] [--seeds N] [--worlds K] [--iterations N] [--out DIR]
+#   scripts/ompl_bench/run.sh [--quick] [--seeds N] [--worlds K] [--iterations N] [--repeat R] [--out DIR]
 #
-# --quick: 1 world, 2 seeds, 2000 iterations (explicit flags still win). Default: 3 worlds,
-# 5 seeds, 10,000 iterations, DIR = target/ompl_bench/results (quick: target/ompl_bench/quick).
+# --quick: 1 world, 2 seeds, 2000 iterations, 1 repeat (explicit flags still win). Default:
+# 3 worlds, 5 seeds, 10,000 iterations, 3 repeats of every (world, seed) (the table takes each
+# one's fastest: the runs are deterministic, only the machine's load varies), DIR =
+# target/ompl_bench/results (quick: target/ompl_bench/quick).
 # Writes DIR/worlds/ (the scenario TOMLs and the OMPL text worlds), DIR/runs/ (each run's path
 # and plan), DIR/results.csv (one row per planner run), DIR/summary.md (the table it prints).
 # Build outputs go to target/ompl_bench/build/. Installs libompl-dev with apt-get when missing.
@@ -15,7 +17,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 
 quick=0
-seeds="" worlds="" iterations="" out=""
+seeds="" worlds="" iterations="" repeat="" out=""
 usage() {
     sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
     exit "${1:-2}"
@@ -26,6 +28,7 @@ while [ $# -gt 0 ]; do
         --seeds) seeds=${2:?--seeds N}; shift ;;
         --worlds) worlds=${2:?--worlds K}; shift ;;
         --iterations) iterations=${2:?--iterations N}; shift ;;
+        --repeat) repeat=${2:?--repeat R}; shift ;;
         --out) out=${2:?--out DIR}; shift ;;
         -h|--help) usage 0 ;;
         *) echo "run.sh: unknown argument $1" >&2; usage ;;
@@ -33,11 +36,11 @@ while [ $# -gt 0 ]; do
     shift
 done
 if [ "$quick" = 1 ]; then
-    : "${worlds:=1}" "${seeds:=2}" "${iterations:=2000}" "${out:=$root/target/ompl_bench/quick}"
+    : "${worlds:=1}" "${seeds:=2}" "${iterations:=2000}" "${repeat:=1}" "${out:=$root/target/ompl_bench/quick}"
 fi
-: "${worlds:=3}" "${seeds:=5}" "${iterations:=10000}" "${out:=$root/target/ompl_bench/results}"
-for v in "$worlds" "$seeds" "$iterations"; do
-    case "$v" in ''|*[!0-9]*|0) echo "run.sh: --worlds, --seeds and --iterations take positive integers" >&2; exit 2 ;; esac
+: "${worlds:=3}" "${seeds:=5}" "${iterations:=10000}" "${repeat:=3}" "${out:=$root/target/ompl_bench/results}"
+for v in "$worlds" "$seeds" "$iterations" "$repeat"; do
+    case "$v" in ''|*[!0-9]*|0) echo "run.sh: --worlds, --seeds, --iterations and --repeat take positive integers" >&2; exit 2 ;; esac
 done
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
@@ -111,7 +114,7 @@ done
 runs="$out/runs"
 mkdir -p "$runs"
 results="$out/results.csv"
-echo "world,seed,order,planner,iterations,time_s,length_m,solved,tidepath_verdict,vertices" > "$results"
+echo "world,seed,repeat,order,planner,iterations,time_s,length_m,solved,tidepath_verdict,vertices" > "$results"
 
 run_ompl() { # world seed order k_nearest(1: OMPL's default, 0: the radius form)
     local w=$1 s=$2 order=$3 kn=$4 line verdict label=ompl-rrtstar path
@@ -128,7 +131,7 @@ run_ompl() { # world seed order k_nearest(1: OMPL's default, 0: the radius form)
         verdict=$("$tidepath" eval "$out/worlds/$w.toml" "$path" | sed -n 's/^ *verdict: //p' || true)
     fi
     verdict=${verdict%%,*}  # "NOT feasible, 1 violation(s): ..." -> "NOT feasible"
-    echo "$w,$s,$order,$label,$it,$t,$len,$exact,${verdict// /_},$verts" >> "$results"
+    echo "$w,$s,$r,$order,$label,$it,$t,$len,$exact,${verdict// /_},$verts" >> "$results"
 }
 run_tidepath() { # world seed order
     local w=$1 s=$2 order=$3 plan
@@ -137,7 +140,7 @@ run_tidepath() { # world seed order
     # (plan exits non-zero when the tree did not reach the goal; the plan JSON says so)
     "$tidepath" plan "$out/worlds/$w.toml" --planner rrt-star --samples "$iterations" --seed "$s" --jobs 1 \
         --out "$plan" > "$runs/tidepath_${w}_s$s.txt" || [ -s "$plan" ]
-    python3 - "$plan" "$w" "$s" "$order" >> "$results" <<'EOF'
+    python3 - "$plan" "$w" "$s,$r" "$order" >> "$results" <<'EOF'
 import json, sys
 plan = json.load(open(sys.argv[1]))
 m = plan['missions'][0]
@@ -149,32 +152,36 @@ EOF
 }
 
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-total=$((worlds * seeds))
+total=$((worlds * seeds * repeat))
 n=0
-for k in $(seq 1 "$worlds"); do
-    for s in $(seq 1 "$seeds"); do
-        n=$((n + 1))
-        say "run $n/$total: w$k seed $s"
-        # Three runs back to back: OMPL's default RRTstar (k-nearest), OMPL's radius form,
-        # tidepath's rrt-star; every other pair the order is reversed.
-        if [ "$have_rrt_star" = 0 ]; then
-            run_ompl "w$k" "$s" 1 1
-            run_ompl "w$k" "$s" 2 0
-        elif [ $((n % 2)) = 1 ]; then
-            run_ompl "w$k" "$s" 1 1
-            run_ompl "w$k" "$s" 2 0
-            run_tidepath "w$k" "$s" 3
-        else
-            run_tidepath "w$k" "$s" 1
-            run_ompl "w$k" "$s" 2 0
-            run_ompl "w$k" "$s" 3 1
-        fi
+# Repeat r is one round over every (world, seed), so the repeats of a run are half a minute or more apart.
+for r in $(seq 1 "$repeat"); do
+    for k in $(seq 1 "$worlds"); do
+        for s in $(seq 1 "$seeds"); do
+            n=$((n + 1))
+            say "run $n/$total: w$k seed $s (repeat $r)"
+            # Three runs back to back: OMPL's default RRTstar (k-nearest), OMPL's radius form,
+            # tidepath's rrt-star; the order is reversed from one seed to the next and from one
+            # repeat to the next.
+            if [ "$have_rrt_star" = 0 ]; then
+                run_ompl "w$k" "$s" 1 1
+                run_ompl "w$k" "$s" 2 0
+            elif [ $(((k + s + r) % 2)) = 1 ]; then
+                run_ompl "w$k" "$s" 1 1
+                run_ompl "w$k" "$s" 2 0
+                run_tidepath "w$k" "$s" 3
+            else
+                run_tidepath "w$k" "$s" 1
+                run_ompl "w$k" "$s" 2 0
+                run_ompl "w$k" "$s" 3 1
+            fi
+        done
     done
 done
 
 # (g) The table.
 {
-    echo "OMPL $ompl_version RRTstar vs tidepath rrt-star: $worlds world(s) x $seeds seed(s), $iterations iterations;"
+    echo "OMPL $ompl_version RRTstar vs tidepath rrt-star: $worlds world(s) x $seeds seed(s) x $repeat repeat(s), $iterations iterations;"
     echo "$(date -u +%Y-%m-%d), $(nproc) cores, $(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -n 1); load average $load_before before, $(cut -d\  -f1-3 /proc/loadavg) after"
     echo
     python3 "$here/summarize.py" "$results" "$optimum_csv"
