@@ -26,9 +26,17 @@ fn no_disagreement_over_a_thousand_plans_from_every_planner() {
     let results: Vec<(&str, usize, usize, f64, bool)> = PLANNERS
         .par_iter()
         .map(|entry| {
-            // Graph and composite planners vary little with the seed: a few runs each.
+            // Graph and composite planners vary little with the seed: a few runs each; sampling
+            // planners a few more, with short budgets.
             let optimizer = entry.build.is_optimizer();
-            let seeds = if optimizer { SEEDS } else { 2 };
+            let sampling = entry.build.caps.counts_unit(tidepath::planner::Unit::Samples);
+            let seeds = if optimizer {
+                SEEDS
+            } else if sampling {
+                6
+            } else {
+                2
+            };
             let mut feasible = 0;
             let clock = std::time::Instant::now();
             for s in &worlds {
@@ -45,6 +53,7 @@ fn no_disagreement_over_a_thousand_plans_from_every_planner() {
                             .caps
                             .counts_unit(tidepath::planner::Unit::Iterations)
                             .then_some(iterations),
+                        samples: sampling.then_some(300 + 300 * seed),
                         smoother,
                         ..PlanRequest::default()
                     };

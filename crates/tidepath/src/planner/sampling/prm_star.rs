@@ -238,7 +238,7 @@ impl PrmStar {
         // Connects vertex v to the vertices within the current radius.
         let link = |map: &mut Roadmap, index: &Neighbours, v: u32, edges: &mut Edges<'_>, near: &mut Vec<u32>| {
             let p = map.pos[v as usize];
-            let r = rewire_radius(Variant::Prm, &space, map.pos.len(), self.params.rewire_factor);
+            let r = rewire_radius(Variant::Prm, &space, space.measure(), map.pos.len(), self.params.rewire_factor);
             index.within(p, r, near);
             for &q in near.iter() {
                 let a = map.pos[q as usize];

@@ -202,6 +202,8 @@ impl RrtStar {
             }
         }
         let mut budget = Budget { termination, max_samples: samples, samples: 0 };
+        // The measure the samples spread over: the space's, then the informed set's.
+        let mut measure = space.measure();
         let mut near = Vec::new();
         let mut order: Vec<(f64, u32)> = Vec::new();
         let best = |tree: &Tree, goal: Option<u32>| goal.map_or(f64::INFINITY, |g| tree.cost[g as usize]);
@@ -222,7 +224,10 @@ impl RrtStar {
                 match (self.informed, goal, per_metre) {
                     (true, Some(g), Some(k)) if k > 0.0 => {
                         match Informed::new(m.start, m.goal, tree.cost[g as usize] / k) {
-                            Some(set) => set.sample(&space, rng),
+                            Some(set) => {
+                                measure = set.measure(space.dims).min(space.measure());
+                                set.sample(&space, rng)
+                            }
                             None => space.sample(rng),
                         }
                     }
@@ -249,7 +254,7 @@ impl RrtStar {
                 continue;
             }
             // 3. Choose the parent among the near vertices.
-            let r = rewire_radius(Variant::Rrt, &space, tree.len() + 1, self.params.rewire_factor).min(range);
+            let r = rewire_radius(Variant::Rrt, &space, measure, tree.len() + 1, self.params.rewire_factor).min(range);
             index.within(x_new, r, &mut near);
             order.clear();
             order.extend(

@@ -92,11 +92,12 @@ pub fn unit_ball_measure(d: usize) -> f64 {
 
 /// The connection radius after `n` vertices: gamma (log n / n)^(1/d), with gamma the
 /// variant's lower bound times `factor` (OMPL's `rewire_factor`, 1.1 by default: the theorems
-/// need gamma strictly above the bound). For RRT* the caller also caps it at the steering
-/// range (the eta of the paper).
-pub fn rewire_radius(variant: Variant, space: &SampleSpace, n: usize, factor: f64) -> f64 {
+/// need gamma strictly above the bound), for samples spread over `measure` (the space's, or
+/// the informed set's once Informed RRT* samples only that) in `space.dims` dimensions. For
+/// RRT* the caller also caps it at the steering range (the eta of the paper).
+pub fn rewire_radius(variant: Variant, space: &SampleSpace, measure: f64, n: usize, factor: f64) -> f64 {
     let d = space.dims as f64;
-    let ratio = (space.measure() / unit_ball_measure(space.dims)).powf(1.0 / d);
+    let ratio = (measure / unit_ball_measure(space.dims)).powf(1.0 / d);
     let gamma = match variant {
         Variant::Rrt => (2.0 * (1.0 + 1.0 / d)).powf(1.0 / d) * ratio,
         Variant::Prm => 2.0 * (1.0 + 1.0 / d).powf(1.0 / d) * ratio,

@@ -74,15 +74,15 @@ fn rewire_radius_is_karaman_and_frazzoli() {
     let flat = SampleSpace { lo: Vec3::ZERO, hi: Vec3::new(1000.0, 1000.0, 0.0), dims: 2 };
     // d = 2, mu = 1e6: gamma_RRT* = sqrt(3) sqrt(1e6 / pi) = 977.205; at n = 100, times
     // sqrt(ln 100 / 100) = 0.214597.
-    let r = rewire_radius(Variant::Rrt, &flat, 100, 1.0);
+    let r = rewire_radius(Variant::Rrt, &flat, flat.measure(), 100, 1.0);
     assert!((r - 977.205_023 * 0.214_596_7).abs() < 1e-3, "{r}");
     // gamma_PRM* = 2 sqrt(1.5) sqrt(1e6 / pi) = 1381.977.
-    let r = rewire_radius(Variant::Prm, &flat, 100, 1.0);
+    let r = rewire_radius(Variant::Prm, &flat, flat.measure(), 100, 1.0);
     assert!((r - 1381.976_597 * 0.214_596_7).abs() < 1e-3, "{r}");
     // d = 3, mu = 1e9: (mu / (4 pi / 3))^(1/3) = 620.350; gamma_RRT* = (8/3)^(1/3) * that =
     // 860.272; at n = 1000, (ln 1000 / 1000)^(1/3) = 0.190455; the factor scales it.
     let cube = SampleSpace { lo: Vec3::ZERO, hi: Vec3::splat(1000.0), dims: 3 };
-    let r = rewire_radius(Variant::Rrt, &cube, 1000, 1.1);
+    let r = rewire_radius(Variant::Rrt, &cube, cube.measure(), 1000, 1.1);
     assert!((r - 1.1 * 860.272_4 * 0.190_455_4).abs() < 1e-2, "{r}");
     assert!((unit_ball_measure(3) - 4.188_790_2).abs() < 1e-6);
 }
