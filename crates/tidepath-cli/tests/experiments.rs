@@ -46,6 +46,16 @@ fn compare_writes_all_files_and_is_independent_of_jobs() {
     }
     let csv = std::fs::read_to_string(a.join("runs.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 12);
+    // The default reference (theta-star in 3-D) is a dashed line on the convergence figure, and
+    // every planner's legend entry gives its final gap or its feasible runs.
+    let conv = std::fs::read_to_string(a.join("convergence.svg")).unwrap();
+    assert!(conv.contains("\nreference theta-star ("), "no reference line in convergence.svg");
+    assert!(conv.contains("\niteration\n"), "optimizers' axis is not in iterations");
+    for p in ["pso", "ga", "de"] {
+        let gap = conv.contains(&format!("\n{p} (final gap "));
+        let few = (0..=2).any(|k| conv.contains(&format!("\n{p} ({k}/4 runs feasible)")));
+        assert!(gap || few, "{p}: neither a gap nor its feasible runs in the legend");
+    }
     let ompl = std::fs::read_to_string(&log).unwrap();
     assert!(ompl.contains("3 planners") && ompl.contains("tidepath_pso"), "{ompl}");
 

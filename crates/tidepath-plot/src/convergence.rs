@@ -1,10 +1,12 @@
-//! Convergence curves: best cost against iteration, one median line per series with an
-//! optional band (the interquartile range over repeated runs).
+//! Convergence curves: best cost against iteration (or sample), one median line per series
+//! with an optional band (the interquartile range over repeated runs).
 //!
 //! The y axis switches to log10 when the costs span more than two decades, since early costs
 //! (often penalty-dominated) would otherwise flatten everything that happens later; it is then
 //! labelled at whole decades from end to end (see [`super::log_axis`]). Non-finite
 //! values (no feasible solution yet, failed runs) break the line instead of being invented.
+//! Long histories (a sampling planner's, one entry per sample) are thinned to at most
+//! [`MAX_DRAWN_POINTS`] per line for drawing, keeping every end of a finite stretch.
 
 use std::ops::Range;
 
@@ -20,12 +22,20 @@ use tidepath::error::Result;
 
 pub(crate) const Y_LABELS: usize = 7;
 
-/// One curve of a convergence plot: `median[i]` is the value at iteration i; `band`, when
-/// given, is (lower, upper) per iteration and is shaded behind the line.
+/// Most points of one drawn line or band edge: more are invisible at any figure width and
+/// only slow the drawing and bloat the SVG (20 runs of 20,000 samples each).
+pub const MAX_DRAWN_POINTS: usize = 2000;
+
+/// One curve of a convergence plot: `median[i]` is the value at x = `first_x + i` (an
+/// iteration or a sample count); `band`, when given, is (lower, upper) per entry and is shaded
+/// behind the line.
 #[derive(Clone, Debug)]
 pub struct ConvergenceSeries<'a> {
     pub label: String,
     pub median: &'a [f64],
+    /// The x of entry 0: 0 for iterations (entry 0 is the state after initialisation), 1 for
+    /// samples (entry 0 is the best cost after the first sample).
+    pub first_x: f64,
     pub band: Option<(&'a [f64], &'a [f64])>,
     /// Palette index ([`style::path_color`]); `None` takes the series' position in the list.
     /// Set it when a series belongs to a path drawn elsewhere, so both share a colour.
@@ -38,7 +48,13 @@ pub struct ConvergenceSeries<'a> {
 impl<'a> ConvergenceSeries<'a> {
     /// A single run's history: a line without a band.
     pub fn line(label: impl Into<String>, values: &'a [f64]) -> Self {
-        Self { label: label.into(), median: values, band: None, color: None, mark_first: false }
+        Self { label: label.into(), median: values, first_x: 0.0, band: None, color: None, mark_first: false }
+    }
+
+    /// The x of the last entry of the line or band.
+    fn last_x(&self) -> f64 {
+        let n = self.median.len().max(self.band.map_or(0, |(l, u)| l.len().min(u.len())));
+        self.first_x + n.saturating_sub(1) as f64
     }
 }
 
@@ -58,6 +74,32 @@ pub fn wants_log_scale(values: impl IntoIterator<Item = f64>) -> bool {
 
 fn series_color(i: usize, s: &ConvergenceSeries) -> RGBColor {
     style::path_color(s.color.unwrap_or(i))
+}
+
+/// Whether two values draw the same: equal, or both not finite (a gap either way).
+fn same(a: f64, b: f64) -> bool {
+    a == b || (!a.is_finite() && !b.is_finite())
+}
+
+/// The indices of `lines` (equally long) to draw, at most about `max` of them: all when they
+/// fit; else both ends of every finite stretch (where a curve becomes finite, and where it
+/// stops) and both ends of every flat stretch, which draw a step curve exactly; and when even
+/// those are too many, the ends of the finite stretches and an even stride over the rest.
+pub(crate) fn thin(lines: &[&[f64]], max: usize) -> Vec<usize> {
+    let n = lines.iter().map(|l| l.len()).min().unwrap_or(0);
+    if n <= max.max(2) {
+        return (0..n).collect();
+    }
+    let finite = |i: usize| lines.iter().all(|l| l[i].is_finite());
+    let edge = |i: usize| i == 0 || i + 1 == n || finite(i) != finite(i - 1) || finite(i) != finite(i + 1);
+    let step = |i: usize| lines.iter().any(|l| !same(l[i], l[i - 1]) || !same(l[i], l[i + 1]));
+    let corners: Vec<usize> = (0..n).filter(|&i| edge(i) || step(i)).collect();
+    if corners.len() <= max {
+        return corners;
+    }
+    let edges = corners.iter().filter(|&&i| edge(i)).count();
+    let stride = n.div_ceil(max.saturating_sub(edges).max(1));
+    (0..n).filter(|&i| i % stride == 0 || edge(i)).collect()
 }
 
 /// Maximal runs of consecutive indices where `ok` holds.
@@ -105,8 +147,7 @@ pub fn draw_convergence<DB: DrawingBackend>(
     }
     let lo = finite.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let n = series.iter().map(|s| s.median.len()).max().unwrap_or(0);
-    let x_range = x_range(n, series);
+    let x_range = x_range(series);
 
     // Each swatch is drawn as its curve is: a line, over its own band when it has one.
     let mut legend: Vec<LegendEntry> = series
@@ -131,27 +172,45 @@ pub fn draw_convergence<DB: DrawingBackend>(
 
     if let Some(decades) = Decades::for_values(lo, hi).filter(|_| wants_log_scale(finite.iter().copied())) {
         let y = DecadeAxis::new(decades);
-        let chart = build(&chart_area, x_range, y, "best cost (log scale)", |v: &f64| log_axis::label(*v))?;
-        draw_curves(chart, series)
+        let mut chart = build(&chart_area, Frame::new(x_range, "iteration"), y, "best cost (log scale)", |v: &f64| {
+            log_axis::label(*v)
+        })?;
+        draw_curves(&mut chart, series)
     } else {
         let pad = if hi > lo { (hi - lo) * 0.05 } else { lo.abs().max(1.0) * 0.1 };
         let y = (lo - pad)..(hi + pad);
-        let chart = build(&chart_area, x_range, y.clone(), "best cost", style::tick_formatter(y, Y_LABELS))?;
-        draw_curves(chart, series)
+        let frame = Frame::new(x_range, "iteration");
+        let mut chart = build(&chart_area, frame, y.clone(), "best cost", style::tick_formatter(y, Y_LABELS))?;
+        draw_curves(&mut chart, series)
     }
 }
 
-/// Iterations 0 to n - 1, with a little room left of 0 when a first point is marked so its
-/// diamond is not cut in half by the axis.
-pub(crate) fn x_range(n: usize, series: &[ConvergenceSeries]) -> Range<f64> {
-    let end = (n.saturating_sub(1) as f64).max(1.0);
+/// From 0 to the last entry of the longest series (at least 1), with a little room left of 0
+/// when a first point is marked so its diamond is not cut in half by the axis.
+pub(crate) fn x_range(series: &[ConvergenceSeries]) -> Range<f64> {
+    let end = series.iter().map(ConvergenceSeries::last_x).fold(1.0, f64::max);
     let start = if series.iter().any(|s| s.mark_first) { -0.025 * end } else { 0.0 };
     start..end
 }
 
+/// The x axis of a convergence chart and the room right of the plot.
+pub(crate) struct Frame<'s> {
+    pub x: Range<f64>,
+    /// "iteration", "samples", ...
+    pub x_desc: &'s str,
+    /// Pixels right of the plot (labels at the curves' ends go there).
+    pub margin_right: u32,
+}
+
+impl<'s> Frame<'s> {
+    pub fn new(x: Range<f64>, x_desc: &'s str) -> Self {
+        Self { x, x_desc, margin_right: 18 }
+    }
+}
+
 pub(crate) fn build<'a, DB, Y>(
     area: &'a DrawingArea<DB, Shift>,
-    x: Range<f64>,
+    frame: Frame<'_>,
     y: Y,
     y_desc: &str,
     y_fmt: impl Fn(&f64) -> String,
@@ -161,13 +220,14 @@ where
     Y: AsRangedCoord<Value = f64>,
     Y::CoordDescType: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
-    // Iterations are whole numbers: at most one label per iteration.
+    let x = frame.x;
+    // Iterations and samples are whole numbers: at most one label per whole number.
     let x_labels = ((x.end - x.start).round() as usize + 1).min(8);
     // Room for the widest tick label and the axis description beside it, never on it.
     let y: Y::CoordDescType = y.into();
     let y_label_w = style::label_area_for(y.key_points(BoldPoints(Y_LABELS)).iter().map(&y_fmt));
     let mut chart = ChartBuilder::on(area)
-        .margin_right(18)
+        .margin_right(frame.margin_right)
         .margin_top(6)
         .x_label_area_size(46)
         .y_label_area_size(y_label_w)
@@ -179,7 +239,7 @@ where
         .bold_line_style(style::GRID)
         .x_labels(x_labels)
         .y_labels(Y_LABELS)
-        .x_desc("iteration")
+        .x_desc(frame.x_desc)
         .y_desc(y_desc)
         .x_label_formatter(&|v: &f64| if v.fract().abs() < 1e-9 { format!("{v:.0}") } else { String::new() })
         .y_label_formatter(&y_fmt)
@@ -190,8 +250,10 @@ where
     Ok(chart)
 }
 
+/// Draws every series' band and median line (thinned to [`MAX_DRAWN_POINTS`]), values
+/// clamped to the y range, and the marked first points on top.
 pub(crate) fn draw_curves<DB, Y>(
-    mut chart: ChartContext<DB, Cartesian2d<RangedCoordf64, Y>>,
+    chart: &mut ChartContext<DB, Cartesian2d<RangedCoordf64, Y>>,
     series: &[ConvergenceSeries],
 ) -> Result<()>
 where
@@ -205,19 +267,22 @@ where
     let y = |v: f64| v.clamp(y_lo, y_hi);
     for (i, s) in series.iter().enumerate() {
         let color = series_color(i, s);
+        let x = |k: usize| s.first_x + k as f64;
         if let Some((lower, upper)) = s.band {
             let m = lower.len().min(upper.len());
-            let ok = |k: usize| lower[k].is_finite() && upper[k].is_finite();
-            for r in runs(m, ok) {
-                let mut poly: Vec<(f64, f64)> = r.clone().map(|k| (k as f64, y(upper[k]))).collect();
-                poly.extend(r.rev().map(|k| (k as f64, y(lower[k]))));
+            let keep = thin(&[&lower[..m], &upper[..m]], MAX_DRAWN_POINTS);
+            let ok = |j: usize| lower[keep[j]].is_finite() && upper[keep[j]].is_finite();
+            for r in runs(keep.len(), ok) {
+                let mut poly: Vec<(f64, f64)> = keep[r.clone()].iter().map(|&k| (x(k), y(upper[k]))).collect();
+                poly.extend(keep[r].iter().rev().map(|&k| (x(k), y(lower[k]))));
                 chart
                     .draw_series(std::iter::once(Polygon::new(poly, style::fill(color.mix(0.2)))))
                     .map_err(plot_err)?;
             }
         }
-        for r in runs(s.median.len(), |k| s.median[k].is_finite()) {
-            let pts: Vec<(f64, f64)> = r.map(|k| (k as f64, y(s.median[k]))).collect();
+        let keep = thin(&[s.median], MAX_DRAWN_POINTS);
+        for r in runs(keep.len(), |j| s.median[keep[j]].is_finite()) {
+            let pts: Vec<(f64, f64)> = keep[r].iter().map(|&k| (x(k), y(s.median[k]))).collect();
             if pts.len() == 1 {
                 chart.draw_series(std::iter::once(Circle::new(pts[0], 3, style::fill(color)))).map_err(plot_err)?;
             } else {
@@ -230,7 +295,7 @@ where
     let base = chart.plotting_area().get_base_pixel();
     for (i, s) in series.iter().enumerate().filter(|(_, s)| s.mark_first) {
         if let Some(k) = s.median.iter().position(|v| v.is_finite()) {
-            let (px, py) = chart.backend_coord(&(k as f64, y(s.median[k])));
+            let (px, py) = chart.backend_coord(&(s.first_x + k as f64, y(s.median[k])));
             style::draw_diamond(&area, (px - base.0, py - base.1), series_color(i, s))?;
         }
     }
@@ -260,6 +325,7 @@ mod tests {
             ConvergenceSeries {
                 label: "pso".into(),
                 median: &median,
+                first_x: 0.0,
                 band: Some((&lower, &upper)),
                 color: None,
                 mark_first: false,
@@ -267,6 +333,7 @@ mod tests {
             ConvergenceSeries {
                 label: "de".into(),
                 median: &other,
+                first_x: 0.0,
                 band: Some((&lower, &other)),
                 color: Some(3),
                 mark_first: true,

@@ -151,3 +151,24 @@ fn function_tables_give_zero_counts_with_their_denominator() {
     assert!(md.contains("| 1/3 | 2/3 |") && md.contains("| 0/3 | 0/3 |"), "{md}");
     assert!(legend(&c).contains("of all runs"));
 }
+
+#[test]
+fn sampling_planners_are_marked_by_their_final_costs_like_any_planner() {
+    // Samples, no iterations, a history per sample; two rrt-star runs found no path (infinite
+    // cost, which ranks last).
+    let sampled = |planner: &str, i: u64, cost: f64| RunRecord {
+        samples: 3000,
+        iterations: 0,
+        history: vec![None, Some(cost)],
+        ..run(planner, i, cost, cost.is_finite(), 100.0)
+    };
+    let mut records: Vec<RunRecord> =
+        (0..8).map(|i| sampled("rrt-star", i, if i < 6 { 20.0 + i as f64 } else { f64::INFINITY })).collect();
+    records.extend((0..8).map(|i| sampled("informed-rrt-star", i, 10.0 + i as f64)));
+    records.extend((0..8).map(|i| RunRecord { iterations: 50, ..run("pso", i, 24.5 + i as f64, true, 100.0) }));
+    let c = from_records("scenario", &["bay"], &["rrt-star", "informed-rrt-star", "pso"], 8, records);
+    assert_eq!(c.rows[1].mark, Some(RowMark::Better), "{:?}", c.rows[1]);
+    assert_eq!(c.rows[2].mark, Some(RowMark::Similar), "{:?}", c.rows[2]);
+    assert!(c.rows[1].p_value.unwrap() < ALPHA);
+    assert_eq!(c.rows[0].feasible_runs, 6);
+}

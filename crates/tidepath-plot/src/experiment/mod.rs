@@ -31,7 +31,9 @@ use tidepath::error::Result;
 use tidepath_experiments::RunRecord;
 
 pub use boxplot_figure::render_boxplot_figure;
-pub use convergence_figure::render_convergence_figure;
+pub use convergence_figure::{
+    render_convergence_figure, render_convergence_figure_with, ConvergenceContext, HistoryUnit, ReferenceCost,
+};
 pub use paths_figure::render_paths_figure;
 pub use renderer::ExperimentFigures;
 

@@ -1,7 +1,10 @@
 //! The figures of a comparison, for the experiment layer's output writer: the plotting side of
 //! [`tidepath_experiments::output::FigureRenderer`].
 
-use super::{render_boxplot_figure, render_convergence_figure, render_paths_figure, PlannerRuns, ProblemRuns};
+use super::{
+    render_boxplot_figure, render_convergence_figure_with, render_paths_figure, ConvergenceContext, PlannerRuns,
+    ProblemRuns,
+};
 use crate::{PlanFigure, PlotPath};
 use tidepath::error::Result;
 use tidepath::geom::Vec3;
@@ -49,9 +52,10 @@ impl FigureRenderer for ExperimentFigures {
         let mut out = vec![
             (
                 "convergence.svg".to_string(),
-                render_convergence_figure(
+                render_convergence_figure_with(
                     &format!("Convergence — {title} (median and interquartile band)"),
                     &problems,
+                    &ConvergenceContext::of(c),
                 )?,
             ),
             ("boxplot.svg".to_string(), render_boxplot_figure(&format!("Final cost — {title}"), &problems)?),
