@@ -114,8 +114,10 @@ fn every_planner_and_smoother_keeps_the_clock_and_the_stop_flag() {
         let after = raised.elapsed();
         eprintln!("{what}: stop flag: {after:?} after");
         match r {
-            // A planner that finished before the flag went up had nothing to cancel.
-            Ok(_) if returned < raised => {}
+            // A planner that finished before the flag went up had nothing to cancel; nor had a
+            // run that was judging its finished path when it went up (it returns at once:
+            // on this heavy world a planner that ignored the flag would run for seconds).
+            Ok(_) if returned < raised + Duration::from_millis(100) => {}
             Ok(r) if r.stop_reason != StopReason::Cancelled => {
                 failures.push(format!("{what}: stopped by {} instead of cancelled", r.stop_reason.id()))
             }

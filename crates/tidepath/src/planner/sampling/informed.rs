@@ -42,7 +42,7 @@ impl Informed {
     /// when start and goal coincide (no direction).
     pub fn new(start: Vec3, goal: Vec3, c_best: f64) -> Option<Self> {
         let c_min = start.distance(goal);
-        if !(c_min > 0.0) || !c_best.is_finite() {
+        if c_min.is_nan() || c_min <= 0.0 || !c_best.is_finite() {
             return None;
         }
         let c_best = c_best.max(c_min);

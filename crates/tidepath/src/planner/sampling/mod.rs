@@ -145,13 +145,7 @@ impl Budget<'_> {
 
 /// The sample limit and wall-time share of mission `i` of `n`, planned one after another: an
 /// even share of what is left, so a fleet's last mission is not starved.
-pub fn mission_budget<'t>(
-    termination: &'t Termination,
-    total: u64,
-    used: u64,
-    i: usize,
-    n: usize,
-) -> (u64, Termination) {
+pub fn mission_budget(termination: &Termination, total: u64, used: u64, i: usize, n: usize) -> (u64, Termination) {
     let left = (n - i).max(1) as u64;
     let samples = total.saturating_sub(used) / left + u64::from(i + 1 == n) * (total.saturating_sub(used) % left);
     (samples, termination.share_of_remaining(1.0 / left as f64))

@@ -78,7 +78,7 @@ fn rewire_radius_is_karaman_and_frazzoli() {
     assert!((r - 977.205_023 * 0.214_596_7).abs() < 1e-3, "{r}");
     // gamma_PRM* = 2 sqrt(1.5) sqrt(1e6 / pi) = 1381.977.
     let r = rewire_radius(Variant::Prm, &flat, flat.measure(), 100, 1.0);
-    assert!((r - 1381.976_597 * 0.214_596_7).abs() < 1e-3, "{r}");
+    assert!((r - 1_381.976_597 * 0.214_596_7).abs() < 1e-3, "{r}");
     // d = 3, mu = 1e9: (mu / (4 pi / 3))^(1/3) = 620.350; gamma_RRT* = (8/3)^(1/3) * that =
     // 860.272; at n = 1000, (ln 1000 / 1000)^(1/3) = 0.190455; the factor scales it.
     let cube = SampleSpace { lo: Vec3::ZERO, hi: Vec3::splat(1000.0), dims: 3 };

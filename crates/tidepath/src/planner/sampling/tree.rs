@@ -85,6 +85,7 @@ impl Tree {
     /// does, every edge below q is priced again at its new departure time; the rewire is
     /// refused (false, nothing changed) when one of them becomes invalid, when the vertex
     /// `keep` (the goal) would get dearer, or when `termination` stops the walk.
+    #[allow(clippy::too_many_arguments)]
     pub fn reparent(
         &mut self,
         q: u32,
