@@ -306,13 +306,22 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
             println!("{indent}... and {} more violations", m.violations.len() - 8);
         }
     }
-    let mut work = format!("{} evaluations in {} iterations", r.evaluations, r.iterations);
-    if r.expansions > 0 {
-        work.push_str(&format!(", {} expansions", r.expansions));
+    // What this planner counted: evaluations and iterations (optimizers), expansions (graph
+    // search), samples (sampling planners), and the graph it built.
+    let mut parts = Vec::new();
+    if r.evaluations > 0 || r.iterations > 0 {
+        parts.push(format!("{} evaluations in {} iterations", r.evaluations, r.iterations));
     }
     if r.samples > 0 {
-        work.push_str(&format!(", {} samples", r.samples));
+        parts.push(format!("{} samples", r.samples));
     }
+    if r.expansions > 0 {
+        parts.push(format!("{} expansions", r.expansions));
+    }
+    if r.samples > 0 && r.graph_nodes > 0 {
+        parts.push(format!("{} vertices, {} edges, {} motion checks", r.graph_nodes, r.graph_edges, r.motion_checks));
+    }
+    let work = if parts.is_empty() { "no counted work".to_string() } else { parts.join(", ") };
     println!("  search         {work}, wall time {:.3} s, stopped by {}", r.elapsed_s, r.stop_reason.id());
     if let Some(limit) = r.time_limit_s {
         let source = if r.default_time_cap { " (default cap; change with --time-limit)" } else { "" };

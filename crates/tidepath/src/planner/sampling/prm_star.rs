@@ -4,7 +4,7 @@
 //! * **Roadmap**: start and goal are its first two vertices, the warm start's waypoints the
 //!   next; each sample valid whatever the time ([`crate::validity::Validator::fixed_state`])
 //!   joins it, connected to every vertex within r = gamma_PRM* (log n / n)^(1/d)
-//!   ([`super::rewire_radius`]) by a valid edge that keeps the pitch limit. In a world that
+//!   ([`super::rewire_radius`]; at most `max_radius` when set) by a valid edge that keeps the pitch limit. In a world that
 //!   does not change in time an edge is priced once, by `motion_cost`; in one that does, edges
 //!   are checked against what does not move (seabed, fixed obstacles, the current at the
 //!   departure time) and priced when the search reaches them, leaving at the vehicle's arrival
@@ -26,7 +26,7 @@ use super::neighbours::Neighbours;
 use super::{mission_budget, rewire_radius, Budget, Edges, Kinematics, SampleSpace, Variant, DEFAULT_SAMPLES};
 use crate::geom::Vec3;
 use crate::optim::Progress;
-use crate::params::{Checked, Range};
+use crate::params::{Bound, Checked, Range};
 use crate::planner::{Claim, Planner, PlannerOutput, Problem, RunOptions, SearchGraph};
 use crate::rng::Rng;
 use crate::termination::{StopReason, Termination};
@@ -42,6 +42,8 @@ crate::params! {
         /// Factor on the least connection constant gamma of the theorem (above 1 keeps its
         /// guarantee).
         rewire_factor: f64 = 1.1, Range::closed(0.1, 10.0), "OMPL (rewire_factor)";
+        /// Largest connection radius (m); absent: none (lfhh2019 caps it at 15).
+        max_radius: Option<f64> = None, Range::Number { lo: Bound::Open(0.0), hi: Bound::Closed(1e8) }, "Karaman & Frazzoli 2011; lfhh2019 (r_PRM)";
         /// Start-goal queries while the roadmap grows, for the convergence history (one more
         /// runs at the end).
         queries: usize = 10, Range::integer(0, 10_000), "tidepath";
@@ -238,7 +240,8 @@ impl PrmStar {
         // Connects vertex v to the vertices within the current radius.
         let link = |map: &mut Roadmap, index: &Neighbours, v: u32, edges: &mut Edges<'_>, near: &mut Vec<u32>| {
             let p = map.pos[v as usize];
-            let r = rewire_radius(Variant::Prm, &space, space.measure(), map.pos.len(), self.params.rewire_factor);
+            let r = rewire_radius(Variant::Prm, &space, space.measure(), map.pos.len(), self.params.rewire_factor)
+                .min(self.params.max_radius.unwrap_or(f64::INFINITY));
             index.within(p, r, near);
             for &q in near.iter() {
                 let a = map.pos[q as usize];
