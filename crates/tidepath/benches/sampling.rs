@@ -61,7 +61,7 @@ fn bench(c: &mut Criterion) {
             [Mission::new("m", vehicle.clone(), Vec3::new(10000.0, 1000.0, z), Vec3::new(10000.0, 39000.0, z), 0.0)];
         let problem = Problem { world: &w, settings: &settings, cost: &cost, missions: &missions };
         let t = Termination { max_samples: Some(10_000), ..Termination::default() };
-        let mut run = |planner: &mut dyn Planner, seed| {
+        let run = |planner: &mut dyn Planner, seed| {
             let mut rng = tidepath::rng::run_rng(seed, 0);
             solve(planner, &problem, &t, &mut rng, SolveOptions::default(), &mut |_| {}).unwrap()
         };
