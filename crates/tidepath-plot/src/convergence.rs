@@ -148,6 +148,8 @@ pub fn draw_convergence<DB: DrawingBackend>(
     let lo = finite.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let x_range = x_range(series);
+    // Sample histories start at x = 1 (entry k is after sample k + 1).
+    let x_desc = if series.iter().all(|s| s.first_x == 1.0) { "samples" } else { "iteration" };
 
     // Each swatch is drawn as its curve is: a line, over its own band when it has one.
     let mut legend: Vec<LegendEntry> = series
@@ -172,14 +174,13 @@ pub fn draw_convergence<DB: DrawingBackend>(
 
     if let Some(decades) = Decades::for_values(lo, hi).filter(|_| wants_log_scale(finite.iter().copied())) {
         let y = DecadeAxis::new(decades);
-        let mut chart = build(&chart_area, Frame::new(x_range, "iteration"), y, "best cost (log scale)", |v: &f64| {
-            log_axis::label(*v)
-        })?;
+        let mut chart =
+            build(&chart_area, Frame::new(x_range, x_desc), y, "best cost (log scale)", |v: &f64| log_axis::label(*v))?;
         draw_curves(&mut chart, series)
     } else {
         let pad = if hi > lo { (hi - lo) * 0.05 } else { lo.abs().max(1.0) * 0.1 };
         let y = (lo - pad)..(hi + pad);
-        let frame = Frame::new(x_range, "iteration");
+        let frame = Frame::new(x_range, x_desc);
         let mut chart = build(&chart_area, frame, y.clone(), "best cost", style::tick_formatter(y, Y_LABELS))?;
         draw_curves(&mut chart, series)
     }

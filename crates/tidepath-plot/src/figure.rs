@@ -53,6 +53,9 @@ pub struct PlanFigure<'a> {
     /// What iteration 0 of the histories is when something ran before the iterations (a
     /// composite planner's reference search, a warm start), marked on the convergence panel.
     pub history_start: Option<String>,
+    /// The histories have one entry per sample (sampling planners: entry k is after sample
+    /// k + 1), not per iteration.
+    pub history_per_sample: bool,
     /// The planner's search graphs (`plan --graph`, `--plot-graph`), drawn faintly under the
     /// obstacles' outlines and the paths on the plan view; may be empty.
     pub graphs: Vec<PlotGraph<'a>>,
@@ -74,6 +77,7 @@ impl<'a> PlanFigure<'a> {
             reference: None,
             histories: Vec::new(),
             history_start: None,
+            history_per_sample: false,
             graphs: Vec::new(),
         }
     }
@@ -117,6 +121,7 @@ pub fn render_plan_figure(fig: &PlanFigure) -> Result<String> {
             .map(|(i, (label, values))| ConvergenceSeries {
                 color: Some(fig.paths.iter().position(|p| &p.label == label).unwrap_or(i)),
                 mark_first: fig.history_start.is_some(),
+                first_x: if fig.history_per_sample { 1.0 } else { 0.0 },
                 ..ConvergenceSeries::line(label.clone(), values)
             })
             .collect();

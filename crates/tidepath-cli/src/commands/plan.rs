@@ -241,7 +241,12 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
     fig.histories = vec![(report.planner.clone(), &history)];
     // A search before the iterations (a composite planner's reference) or a warm start is
     // where iteration 0 comes from.
-    fig.history_start = if report.expansions > 0 && !history.is_empty() {
+    // A sampling planner's history has one entry per sample (PRM*'s expansions are its
+    // queries, not a search before the samples).
+    fig.history_per_sample = report.samples > 0 && report.iterations == 0;
+    fig.history_start = if fig.history_per_sample {
+        None
+    } else if report.expansions > 0 && !history.is_empty() {
         Some(format!("after a reference search ({} expansions)", report.expansions))
     } else if report.warm_start && !history.is_empty() {
         Some("includes the warm start (--init)".to_string())
