@@ -44,6 +44,12 @@ use crate::termination::{StopReason, Termination};
 /// benchmarks of RRT* commonly use 10,000 iterations.
 pub const DEFAULT_SAMPLES: usize = 10_000;
 
+/// Most vertices a tree keeps (about 130 bytes each with the neighbour index: some 1.1 GB) and
+/// most a roadmap keeps (with its edges, some 2 GB): a run that reaches the cap stops growing
+/// and says so, so a huge `--samples` cannot exhaust the memory.
+pub const MAX_TREE_VERTICES: usize = 1 << 23;
+pub const MAX_ROADMAP_VERTICES: usize = 1 << 20;
+
 /// The resolution of edge cuts when `resolution` is not set: a hundredth of the steering
 /// range (OMPL checks motions at 1 % of the space's extent by default).
 pub const RESOLUTION_OF_RANGE: f64 = 0.01;

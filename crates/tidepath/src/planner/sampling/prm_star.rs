@@ -20,10 +20,14 @@
 //!   evaluation reports the distance left; status never `feasible`).
 //!
 //! Budgets: samples (counted), wall time, target cost and the stop flag, polled before every
-//! sample; the query polls them every 16 expansions.
+//! sample; the query polls them every 16 expansions. The roadmap stops growing at
+//! [`super::MAX_ROADMAP_VERTICES`] (memory), and the run then ends as `completed`.
 
 use super::neighbours::Neighbours;
-use super::{mission_budget, rewire_radius, Budget, Edges, Kinematics, SampleSpace, Variant, DEFAULT_SAMPLES};
+use super::{
+    mission_budget, rewire_radius, Budget, Edges, Kinematics, SampleSpace, Variant, DEFAULT_SAMPLES,
+    MAX_ROADMAP_VERTICES,
+};
 use crate::geom::Vec3;
 use crate::optim::Progress;
 use crate::params::{Bound, Checked, Range};
@@ -272,6 +276,9 @@ impl PrmStar {
             }
             if let Some(r) = budget.stop(earlier + best.0) {
                 break Some(r);
+            }
+            if map.pos.len() >= MAX_ROADMAP_VERTICES {
+                break Some(StopReason::Completed);
             }
             budget.samples += 1;
             out.stats.samples += 1;

@@ -38,7 +38,10 @@ use rand::Rng as _;
 use super::informed::Informed;
 use super::neighbours::Neighbours;
 use super::tree::{Tree, ROOT};
-use super::{mission_budget, resolution_or, rewire_radius, Budget, Edges, SampleSpace, Variant, DEFAULT_SAMPLES};
+use super::{
+    mission_budget, resolution_or, rewire_radius, Budget, Edges, SampleSpace, Variant, DEFAULT_SAMPLES,
+    MAX_TREE_VERTICES,
+};
 use crate::geom::Vec3;
 use crate::optim::Progress;
 use crate::params::{Bound, Checked, Range};
@@ -92,6 +95,8 @@ struct Grown {
     stopped: Option<StopReason>,
     /// Informed sampling was asked for but the cost is not a multiple of length.
     uninformed: bool,
+    /// The tree reached [`MAX_TREE_VERTICES`].
+    full: bool,
 }
 
 impl Planner for RrtStar {
@@ -127,6 +132,7 @@ impl Planner for RrtStar {
             }
             if !grown.reached && hint.is_none() {
                 let why = match grown.stopped {
+                    _ if grown.full => format!("before its cap of {MAX_TREE_VERTICES} vertices (memory)"),
                     Some(StopReason::MaxSamples) | None => format!("within {} samples", out.stats.samples),
                     Some(_) => "before the run stopped".into(),
                 };
@@ -171,7 +177,14 @@ impl RrtStar {
         let interrupted = || termination.interrupted().is_some();
         let Some(mut edges) = Edges::new(problem, i, resolution, &interrupted) else {
             let stopped = termination.interrupted().or(Some(StopReason::WallTime));
-            return Grown { path: vec![m.start], reached: false, best: f64::INFINITY, stopped, uninformed: false };
+            return Grown {
+                path: vec![m.start],
+                reached: false,
+                best: f64::INFINITY,
+                stopped,
+                uninformed: false,
+                full: false,
+            };
         };
         let per_metre = problem.cost.cost_per_metre(&edges.model);
         let uninformed = self.informed && per_metre.is_none();
@@ -202,6 +215,7 @@ impl RrtStar {
             }
         }
         let mut budget = Budget { termination, max_samples: samples, samples: 0 };
+        let mut full = false;
         // The measure the samples spread over: the space's, then the informed set's.
         let mut measure = space.measure();
         let mut near = Vec::new();
@@ -214,6 +228,10 @@ impl RrtStar {
             }
             if let Some(r) = budget.stop(earlier + best(&tree, goal)) {
                 break Some(r);
+            }
+            if tree.len() >= MAX_TREE_VERTICES {
+                full = true;
+                break Some(StopReason::Completed);
             }
             budget.samples += 1;
             out.stats.samples += 1;
@@ -331,6 +349,6 @@ impl RrtStar {
             });
         }
         let best = best(&tree, goal);
-        Grown { path: tree.path_to(end), reached, best, stopped, uninformed }
+        Grown { path: tree.path_to(end), reached, best, stopped, uninformed, full }
     }
 }
