@@ -34,7 +34,7 @@ pub use rrt_star::{RrtStar, RrtStarParams};
 pub use space::{rewire_radius, unit_ball_measure, SampleSpace, Variant};
 
 use super::raster_search::{current_speed_bound, time_invariant};
-use super::Problem;
+use super::{Claim, PlannerOutput, Problem};
 use crate::cost::CostModel;
 use crate::geom::Vec3;
 use crate::path::PathModel;
@@ -155,6 +155,45 @@ pub fn mission_budget(termination: &Termination, total: u64, used: u64, i: usize
     let left = (n - i).max(1) as u64;
     let samples = total.saturating_sub(used) / left + u64::from(i + 1 == n) * (total.saturating_sub(used) % left);
     (samples, termination.share_of_remaining(1.0 / left as f64))
+}
+
+/// What one mission's search gave: its path, its additive cost (+inf without a path to the
+/// goal), why its sampling stopped, and a line for the plan's reason (said when it fails).
+pub struct MissionRun {
+    pub path: Vec<Vec3>,
+    pub best: f64,
+    pub stopped: Option<StopReason>,
+    pub hint: Option<String>,
+}
+
+/// Runs a sampling planner's missions one after another: `run(i, termination, samples,
+/// earlier, out)` searches mission `i` within its share of the budget, appending to `out`'s
+/// history (offset by `earlier`, the earlier missions' total) and counts. The first hint
+/// becomes the claim.
+pub fn plan_missions(
+    problem: &Problem<'_>,
+    termination: &Termination,
+    default_samples: u64,
+    mut run: impl FnMut(usize, &Termination, u64, f64, &mut PlannerOutput) -> MissionRun,
+) -> PlannerOutput {
+    let watch = termination.start();
+    let n = problem.missions.len();
+    let total = termination.max_samples.unwrap_or(default_samples);
+    let mut out = PlannerOutput::default();
+    let (mut earlier, mut hint) = (0.0, None);
+    for i in 0..n {
+        let (samples, share) = mission_budget(termination, total, out.stats.samples, i, n);
+        let r = run(i, &share, samples, earlier, &mut out);
+        earlier += r.best;
+        if let Some(s) = r.stopped {
+            out.stats.stop_reason = s;
+        }
+        hint = hint.or(r.hint);
+        out.paths.push(r.path);
+    }
+    out.claim = hint.map(Claim::Hint);
+    out.stats.elapsed = watch.elapsed();
+    out
 }
 
 /// The resolution in metres: the parameter, else [`RESOLUTION_OF_RANGE`] of `range`.

@@ -25,13 +25,13 @@
 
 use super::neighbours::Neighbours;
 use super::{
-    mission_budget, rewire_radius, Budget, Edges, Kinematics, SampleSpace, Variant, DEFAULT_SAMPLES,
+    plan_missions, rewire_radius, Budget, Edges, Kinematics, MissionRun, SampleSpace, Variant, DEFAULT_SAMPLES,
     MAX_ROADMAP_VERTICES,
 };
 use crate::geom::Vec3;
 use crate::optim::Progress;
 use crate::params::{Bound, Checked, Range};
-use crate::planner::{Claim, Planner, PlannerOutput, Problem, RunOptions, SearchGraph};
+use crate::planner::{Planner, PlannerOutput, Problem, RunOptions, SearchGraph};
 use crate::rng::Rng;
 use crate::termination::{StopReason, Termination};
 use crate::validity::Validator;
@@ -163,48 +163,25 @@ impl Planner for PrmStar {
         options: RunOptions<'_>,
         _observer: &mut dyn FnMut(&Progress),
     ) -> PlannerOutput {
-        let watch = termination.start();
-        let n = problem.missions.len();
-        let total = termination.max_samples.unwrap_or(self.params.samples as u64);
-        let mut out = PlannerOutput::default();
-        let mut earlier = 0.0;
-        let mut hint = None;
         // What does not move, for checking roadmap edges before their time is known.
         let fixed: Option<World> = (!super::time_invariant(problem.world)).then(|| {
             let mut w = problem.world.clone();
             w.obstacles.retain(|o| o.velocity == Vec3::ZERO);
             w
         });
-        for i in 0..n {
-            let (samples, share) = mission_budget(termination, total, out.stats.samples, i, n);
+        let default = self.params.samples as u64;
+        plan_missions(problem, termination, default, |i, share, samples, earlier, out| {
             let init = options.init.and_then(|p| p.get(i)).map(Vec::as_slice);
-            let (path, best, stopped) = self.build(
-                problem,
-                i,
-                fixed.as_ref(),
-                &share,
-                samples,
-                init,
-                rng,
-                &mut out,
-                earlier,
-                options.record_graph,
-            );
-            earlier += best;
-            if let Some(r) = stopped {
-                out.stats.stop_reason = r;
-            }
-            if !best.is_finite() && hint.is_none() {
-                hint = Some(format!(
+            let (path, best, stopped) =
+                self.build(problem, i, fixed.as_ref(), share, samples, init, rng, out, earlier, options.record_graph);
+            let hint = (!best.is_finite()).then(|| {
+                format!(
                     "the roadmap did not connect start and goal within {} samples; the path leads to its vertex nearest the goal that the start reaches",
                     out.stats.samples
-                ));
-            }
-            out.paths.push(path);
-        }
-        out.claim = hint.map(Claim::Hint);
-        out.stats.elapsed = watch.elapsed();
-        out
+                )
+            });
+            MissionRun { path, best, stopped, hint }
+        })
     }
 }
 

@@ -39,13 +39,13 @@ use super::informed::Informed;
 use super::neighbours::Neighbours;
 use super::tree::{Tree, ROOT};
 use super::{
-    mission_budget, resolution_or, rewire_radius, Budget, Edges, SampleSpace, Variant, DEFAULT_SAMPLES,
+    plan_missions, resolution_or, rewire_radius, Budget, Edges, MissionRun, SampleSpace, Variant, DEFAULT_SAMPLES,
     MAX_TREE_VERTICES,
 };
 use crate::geom::Vec3;
 use crate::optim::Progress;
 use crate::params::{Bound, Checked, Range};
-use crate::planner::{Claim, Planner, PlannerOutput, Problem, RunOptions, SearchGraph};
+use crate::planner::{Planner, PlannerOutput, Problem, RunOptions, SearchGraph};
 use crate::rng::Rng;
 use crate::termination::{StopReason, Termination};
 
@@ -116,41 +116,27 @@ impl Planner for RrtStar {
         options: RunOptions<'_>,
         _observer: &mut dyn FnMut(&Progress),
     ) -> PlannerOutput {
-        let watch = termination.start();
-        let n = problem.missions.len();
-        let total = termination.max_samples.unwrap_or(self.params.samples as u64);
-        let mut out = PlannerOutput::default();
-        let mut earlier = 0.0;
-        let mut hint = None;
-        for i in 0..n {
-            let (samples, share) = mission_budget(termination, total, out.stats.samples, i, n);
+        let default = self.params.samples as u64;
+        plan_missions(problem, termination, default, |i, share, samples, earlier, out| {
             let init = options.init.and_then(|p| p.get(i)).map(Vec::as_slice);
-            let grown = self.grow(problem, i, &share, samples, init, rng, &mut out, earlier, options.record_graph);
-            earlier += grown.best;
-            if let Some(r) = grown.stopped {
-                out.stats.stop_reason = r;
-            }
-            if !grown.reached && hint.is_none() {
+            let grown = self.grow(problem, i, share, samples, init, rng, out, earlier, options.record_graph);
+            let hint = if !grown.reached {
                 let why = match grown.stopped {
                     _ if grown.full => format!("before its cap of {MAX_TREE_VERTICES} vertices (memory)"),
                     Some(StopReason::MaxSamples) | None => format!("within {} samples", out.stats.samples),
                     Some(_) => "before the run stopped".into(),
                 };
-                hint = Some(format!(
-                    "the tree did not reach the goal {why}; the path leads to its vertex nearest the goal"
-                ));
-            }
-            if grown.uninformed && grown.reached && hint.is_none() {
-                hint = Some(
+                Some(format!("the tree did not reach the goal {why}; the path leads to its vertex nearest the goal"))
+            } else if grown.uninformed {
+                Some(
                     "informed sampling needs a cost proportional to length (still water); it sampled the whole space"
                         .into(),
-                );
-            }
-            out.paths.push(grown.path);
-        }
-        out.claim = hint.map(Claim::Hint);
-        out.stats.elapsed = watch.elapsed();
-        out
+                )
+            } else {
+                None
+            };
+            MissionRun { path: grown.path, best: grown.best, stopped: grown.stopped, hint }
+        })
     }
 }
 
