@@ -15,14 +15,20 @@ pub struct PlannersArgs {
 
 fn section<B: Copy>(title: &str, r: &Registry<B>, params: bool) {
     println!("{title}:");
+    let w = id_width(r);
     for e in r.entries() {
-        print_entry(e, params);
+        print_entry(e, params, w);
     }
     println!();
 }
 
-fn print_entry<B: Copy>(e: &Entry<B>, params: bool) {
-    println!("  {:<10} {} [{}]", e.id, e.description, e.citation);
+/// The column the descriptions start at: the longest id of the table.
+fn id_width<B: Copy>(r: &Registry<B>) -> usize {
+    r.entries().iter().map(|e| e.id.len()).max().unwrap_or(0).max(10)
+}
+
+fn print_entry<B: Copy>(e: &Entry<B>, params: bool, w: usize) {
+    println!("  {:<w$} {} [{}]", e.id, e.description, e.citation);
     if params {
         print_params(e);
     }
@@ -39,9 +45,11 @@ fn print_params<B: Copy>(e: &Entry<B>) {
 
 pub fn list(args: &PlannersArgs) -> Result<Outcome, Error> {
     println!("Planners (plan --planner ID; parameters in [planner.params.ID]):");
-    for e in tidepath::planner::registry().entries() {
-        println!("  {:<10} {} [{}]", e.id, e.description, e.citation);
-        println!("  {:<10} can: {}", "", e.build.caps);
+    let planners = tidepath::planner::registry();
+    let w = id_width(&planners);
+    for e in planners.entries() {
+        println!("  {:<w$} {} [{}]", e.id, e.description, e.citation);
+        println!("  {:<w$} can: {}", "", e.build.caps);
         if args.params {
             print_params(e);
         }
