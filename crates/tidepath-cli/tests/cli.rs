@@ -1,6 +1,10 @@
 //! End-to-end tests of the `tidepath` binary: plan, eval, listings, the bad-input contract and
 //! the status exit codes.
 
+// `plan --graph` (its own file; one test binary builds faster than two).
+#[path = "cli/graph.rs"]
+mod graph;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

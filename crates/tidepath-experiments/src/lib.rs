@@ -14,4 +14,7 @@ pub mod runner;
 pub mod stats;
 pub mod table;
 
+#[cfg(test)]
+mod sampling_compare_tests;
+
 pub use record::RunRecord;

@@ -3,6 +3,9 @@
 //! re-checker, and the distance left reported when the budget is too small.
 
 mod common;
+// The search graphs they give back (its own file; one test binary builds faster than two).
+#[path = "sampling/graphs.rs"]
+mod graphs;
 
 use tidepath::planner::Status;
 use tidepath_io::scenario::{PlanRequest, Scenario};

@@ -6,9 +6,9 @@
 //! most of the domain and the two are not significantly different at 20,000 samples (measured:
 //! mean gaps +0.82 % and +0.93 %, p = 0.26; docs/sampling.md).
 
-use tidepath_experiments::compare::{compare_scenario, RunBudget};
-use tidepath_experiments::runner::RunControl;
-use tidepath_experiments::table::RowMark;
+use crate::compare::{compare_scenario, RunBudget};
+use crate::runner::RunControl;
+use crate::table::RowMark;
 use tidepath_io::scenario::Scenario;
 
 /// 6 x 12 km, twelve discs between start and goal at opposite ends, still water, cost
