@@ -38,8 +38,15 @@ fn every_registered_planner_meets_the_interface() {
         let mut planned = 0;
         for name in ["demo", "salish", "headland"] {
             let s = load(name);
-            let req =
-                PlanRequest { planner: Some(entry.id.into()), seed: 11, parallel: true, ..PlanRequest::default() };
+            // Sampling planners on a short budget (their default is 10,000 samples).
+            let samples = caps.counts_unit(Unit::Samples).then_some(2000);
+            let req = PlanRequest {
+                planner: Some(entry.id.into()),
+                seed: 11,
+                parallel: true,
+                samples,
+                ..PlanRequest::default()
+            };
             let runs: Vec<_> = pools.iter().map(|p| p.install(|| s.plan_in(&components, &req, &mut |_| {}))).collect();
             let runs: Vec<_> = match runs.into_iter().collect::<Result<Vec<_>, _>>() {
                 Ok(r) => r,
