@@ -25,6 +25,7 @@ pub mod raster;
 pub mod registry;
 pub mod rng;
 pub mod scratch;
+pub mod simulate;
 pub mod smoothing;
 pub mod termination;
 pub mod text;

@@ -44,6 +44,7 @@ const ORDER: &[&str] = &[
     "optim",
     "smoothing",
     "planner",
+    "simulate",
 ];
 
 /// The workspace's crates, lowest first: each may depend only on the ones before it.

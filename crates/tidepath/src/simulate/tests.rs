@@ -1,0 +1,101 @@
+//! Hand-computed checks of the loop's parts: the window rule, splicing, flying to a trigger.
+
+use super::*;
+use crate::geom::Aabb;
+use crate::vehicle::Vehicle;
+use crate::world::{Current, Dims, Terrain};
+
+pub(super) fn world_2d() -> World {
+    World {
+        bounds: Aabb::new(Vec3::ZERO, Vec3::new(1000.0, 400.0, 0.0)),
+        dims: Dims::Two,
+        terrain: Terrain::None,
+        obstacles: Vec::new(),
+        current: Current::None,
+        frame: None,
+    }
+}
+
+pub(super) fn vehicle() -> Vehicle {
+    Vehicle { max_turn: std::f64::consts::PI, safety_distance: 5.0, depth_max: 200.0, ..Vehicle::default() }
+}
+
+fn v(x: f64, y: f64) -> Vec3 {
+    Vec3::new(x, y, 0.0)
+}
+
+#[test]
+fn the_window_doubles_or_adds_and_stops_at_the_goal() {
+    // 39 waypoints left (lfhh2019's 40-point path from index 0): 20 -> 39 doubling, 20 -> 21
+    // adding one; a window at the goal has nothing larger to try.
+    assert_eq!(next_window(20, Growth::Double, 39), Some(39));
+    assert_eq!(next_window(5, Growth::Double, 39), Some(10));
+    assert_eq!(next_window(20, Growth::Add(1), 39), Some(21));
+    assert_eq!(next_window(38, Growth::Add(5), 39), Some(39));
+    assert_eq!(next_window(39, Growth::Double, 39), None);
+    assert_eq!(next_window(1, Growth::Add(0), 3), Some(2), "a growth of 0 still grows");
+    // From W = 1 doubling reaches 8 remaining waypoints in 1, 2, 4, 8.
+    let mut w = 1;
+    let mut seen = vec![w];
+    while let Some(n) = next_window(w, Growth::Double, 8) {
+        w = n;
+        seen.push(w);
+    }
+    assert_eq!(seen, [1, 2, 4, 8]);
+    assert_eq!(SimParams::LFHH2019.window, 20);
+    assert_eq!(SimParams::LFHH2019.growth, Growth::Add(1));
+}
+
+#[test]
+fn splicing_keeps_the_route_continuous() {
+    let route = [v(0.0, 0.0), v(100.0, 0.0), v(200.0, 0.0), v(300.0, 0.0), v(400.0, 0.0)];
+    // A piece whose ends are off by rounding is pinned to the vehicle and the target.
+    let piece = [v(1e-12, 0.0), v(50.0, 80.0), v(150.0, 80.0), v(200.0, 1e-12)];
+    let s = splice(&piece, &route, 2);
+    assert_eq!(s, [route[0], piece[1], piece[2], route[2], route[3], route[4]]);
+    // A window to the goal replaces everything.
+    let s = splice(&[route[0], v(200.0, 90.0), route[4]], &route, 4);
+    assert_eq!(s, [route[0], v(200.0, 90.0), route[4]]);
+}
+
+#[test]
+fn the_vehicle_stops_exactly_where_a_trigger_fires() {
+    // 1.5 m/s along (0,0) -> (300,0) -> (300,300). At t = 100 it is 150 m along; after 400 m
+    // it is at (300, 100), at t = 400 / 1.5.
+    let (w, veh, settings) = (world_2d(), vehicle(), ModelSettings::default());
+    let val = Validator::new(&w, &veh, &settings);
+    let route = [v(0.0, 0.0), v(300.0, 0.0), v(300.0, 300.0)];
+    let mut track = Track::new(route[0], 0.0);
+    let triggers = [Trigger::AfterDistance(400.0), Trigger::AtTime(100.0)];
+    let (k, ahead) = advance(&val, &route, &triggers, &mut track).unwrap();
+    assert_eq!(k, 1);
+    assert_eq!(ahead, [v(150.0, 0.0), route[1], route[2]]);
+    assert_eq!(track.points, [route[0], v(150.0, 0.0)]);
+    assert_eq!(track.times, [0.0, 100.0]);
+    let (k, ahead) = advance(&val, &ahead, &triggers[..1], &mut track).unwrap();
+    assert_eq!(k, 0);
+    assert_eq!(ahead, [v(300.0, 100.0), route[2]]);
+    assert_eq!(track.points[2..], [route[1], v(300.0, 100.0)]);
+    assert!((track.times[3] - 400.0 / 1.5).abs() < 1e-9 && (track.travelled - 400.0).abs() < 1e-9);
+    // Without triggers it flies to the end: arrival 600 / 1.5 = 400 s.
+    assert!(advance(&val, &ahead, &[], &mut track).is_none());
+    assert_eq!(track.now().0, route[2]);
+    assert!((track.now().1 - 400.0).abs() < 1e-9);
+    assert!(due(Trigger::AtTime(400.0), 400.0, 0.0) && !due(Trigger::AfterDistance(601.0), 0.0, 600.0));
+}
+
+#[test]
+fn warm_starts_follow_the_planner_table_and_budgets_share_the_total() {
+    assert!(takes_warm_start("rrt-star") && takes_warm_start("pso"));
+    assert!(!takes_warm_start("astar") && !takes_warm_start("my-own-planner"));
+    let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let total = Termination::default()
+        .with_wall_time(std::time::Duration::from_secs(2))
+        .with_stop_flag(flag.clone())
+        .started_now();
+    let per = Termination::iterations(5).with_wall_time(std::time::Duration::from_secs(60));
+    let b = replan_budget(&per, &total);
+    assert!(b.wall_time.unwrap() <= std::time::Duration::from_secs(2));
+    assert_eq!(b.max_iterations, Some(5));
+    assert!(b.stop.is_some() && b.started.is_none());
+}

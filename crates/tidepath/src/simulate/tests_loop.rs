@@ -1,0 +1,124 @@
+//! The whole loop on a small 2-D world: a disc moves onto the route mid-mission and the loop
+//! re-plans around it; the same seed gives the same simulation.
+
+use std::time::Duration;
+
+use super::tests::{vehicle, world_2d};
+use super::*;
+use crate::cost::{GeneralCost, GeneralWeights};
+use crate::encoding::EncodingSpec;
+use crate::geom::Vec2;
+use crate::planner::registry;
+use crate::rng::run_rng;
+use crate::world::changes::{ChangeKind, Law, RandomShift};
+use crate::world::{Obstacle, Shape};
+
+fn v(x: f64, y: f64) -> Vec3 {
+    Vec3::new(x, y, 0.0)
+}
+
+fn disc(x: f64, y: f64) -> Obstacle {
+    Obstacle::fixed(Shape::Circle { center: Vec2::new(x, y), radius: 60.0 })
+}
+
+/// At t = 100 s (the vehicle 150 m along the straight route) the disc parked at (200, 330)
+/// turns out to sit at (500, 200), across the route.
+fn moved_disc(random: Option<RandomShift>) -> Change {
+    Change {
+        trigger: Trigger::AtTime(100.0),
+        kind: ChangeKind::MoveObstacle { index: 0, center: v(500.0, 200.0) },
+        random,
+    }
+}
+
+fn run(id: &str, changes: &[Change], truth: &World, params: SimParams, seed: u64) -> Simulation {
+    let known = World { obstacles: vec![disc(200.0, 330.0)], ..world_2d() };
+    let mission = Mission::new("m", vehicle(), v(50.0, 200.0), v(950.0, 200.0), 0.0);
+    let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
+    let make = || registry().build(id, None, None, &EncodingSpec::default());
+    let per_replan = Termination::default().with_wall_time(Duration::from_secs(60));
+    let setup = Setup {
+        truth,
+        known: &known,
+        mission: &mission,
+        changes,
+        planner: &make,
+        cost: &cost,
+        settings: &ModelSettings::default(),
+        params,
+        per_replan: &per_replan,
+        total: &Termination::default(),
+    };
+    simulate(&setup, &mut run_rng(seed, 0)).unwrap()
+}
+
+/// No jump in space or time: times never decrease, no step is faster than the vehicle in
+/// still water, and each re-plan starts where and when the vehicle was.
+fn assert_continuous(sim: &Simulation) {
+    let t = &sim.track;
+    for (w, tt) in t.points.windows(2).zip(t.times.windows(2)) {
+        assert!(tt[1] >= tt[0], "{tt:?}");
+        assert!(w[0].distance(w[1]) <= 1.5 * (tt[1] - tt[0]) * (1.0 + 1e-9) + 1e-9, "{w:?} {tt:?}");
+    }
+    for p in sim.phases.iter().skip(1) {
+        let k = t.times.iter().rposition(|&x| x <= p.time).unwrap();
+        assert_eq!((t.points[k], t.times[k]), (p.position, p.time));
+        if let Some(r) = p.replan.as_ref().filter(|r| r.status.is_success()) {
+            assert!(r.piece[0].distance(p.position) < 1e-6, "{:?} vs {:?}", r.piece[0], p.position);
+        }
+    }
+}
+
+#[test]
+fn the_loop_replans_around_a_disc_that_moves_onto_the_route() {
+    let truth = World { obstacles: vec![disc(500.0, 200.0)], ..world_2d() };
+    for id in ["astar", "theta-star"] {
+        let sim = run(id, &[moved_disc(None)], &truth, SimParams::default(), 1);
+        assert!(sim.reached && sim.complete, "{id}: {}", sim.reason);
+        assert!(sim.track_violations.is_empty(), "{id}: {:?}", sim.track_violations);
+        assert_eq!(sim.phases.len(), 2);
+        let p = &sim.phases[1];
+        // 150 m along the route (a raster route may wander a cell off the straight line).
+        assert_eq!(p.time, 100.0);
+        assert!(p.position.distance(v(200.0, 200.0)) < 5.0, "{id}: {:?}", p.position);
+        assert!(p.route_problem.is_some(), "the disc blocks the old route");
+        let r = p.replan.as_ref().unwrap();
+        assert!(r.status.is_success() && !r.warm, "{id}: {r:?}");
+        assert_eq!(*sim.track.points.last().unwrap(), v(950.0, 200.0));
+        assert!(sim.track.points.iter().any(|q| (q.y - 200.0).abs() > 60.0), "{id}: the track goes round the disc");
+        assert_continuous(&sim);
+    }
+}
+
+#[test]
+fn a_change_that_closes_the_way_ends_the_mission_naming_the_phase() {
+    // A wall across the whole domain in front of the vehicle.
+    let wall = Obstacle::fixed(Shape::Box { min: v(590.0, -10.0) - Vec3::Z, max: v(610.0, 410.0) + Vec3::Z });
+    let close = Change { trigger: Trigger::AfterDistance(300.0), kind: ChangeKind::AddObstacle(wall), random: None };
+    let sim = run("theta-star", &[moved_disc(None), close], &world_2d(), SimParams::default(), 1);
+    assert!(!sim.reached && sim.complete);
+    assert!(sim.reason.starts_with("phase 2: no feasible window up to the goal"), "{}", sim.reason);
+    assert_eq!(sim.phases.len(), 3);
+    // The route left is where the vehicle stands, 300 m along.
+    assert_eq!(sim.route[0], sim.phases[2].position);
+    assert!((sim.track.travelled - 300.0).abs() < 1e-6, "{}", sim.track.travelled);
+}
+
+#[test]
+fn the_same_seed_gives_the_same_simulation() {
+    let shift = RandomShift { law: Law::Gaussian, scale: 80.0, max_draws: RandomShift::LFHH2019_MAX_DRAWS };
+    let changes = [moved_disc(Some(shift))];
+    let truth = world_2d();
+    let params = SimParams { policy: ReplanPolicy::Always, window: 1, ..SimParams::default() };
+    let strip = |mut s: Simulation| {
+        s.phases.iter_mut().filter_map(|p| p.replan.as_mut()).for_each(|r| r.planning_s = 0.0);
+        s
+    };
+    let a = strip(run("theta-star", &changes, &truth, params, 7));
+    let b = strip(run("theta-star", &changes, &truth, params, 7));
+    assert_eq!(a, b);
+    assert!(a.complete && a.phases.len() == 2, "{}", a.reason);
+    assert!(a.phases[1].replan.is_some(), "replanned at every change");
+    let c = strip(run("theta-star", &changes, &truth, params, 8));
+    assert_ne!(a.phases[1].change, c.phases[1].change, "another seed draws another move");
+}
