@@ -66,7 +66,7 @@ fn the_vehicle_stops_exactly_where_a_trigger_fires() {
     let val = Validator::new(&w, &veh, &settings);
     let route = [v(0.0, 0.0), v(300.0, 0.0), v(300.0, 300.0)];
     let mut track = Track::new(route[0], 0.0);
-    let triggers = [Trigger::AfterDistance(400.0), Trigger::AtTime(100.0)];
+    let triggers = [Event::Trigger(Trigger::AfterDistance(400.0)), Event::Trigger(Trigger::AtTime(100.0))];
     let (k, ahead) = advance(&val, &route, &triggers, &mut track).unwrap();
     assert_eq!(k, 1);
     assert_eq!(ahead, [v(150.0, 0.0), route[1], route[2]]);
@@ -81,7 +81,9 @@ fn the_vehicle_stops_exactly_where_a_trigger_fires() {
     assert!(advance(&val, &ahead, &[], &mut track).is_none());
     assert_eq!(track.now().0, route[2]);
     assert!((track.now().1 - 400.0).abs() < 1e-9);
-    assert!(due(Trigger::AtTime(400.0), 400.0, 0.0) && !due(Trigger::AfterDistance(601.0), 0.0, 600.0));
+    let p = Vec3::ZERO;
+    assert!(due(&Event::Trigger(Trigger::AtTime(400.0)), p, 400.0, 0.0));
+    assert!(!due(&Event::Trigger(Trigger::AfterDistance(601.0)), p, 0.0, 600.0));
 }
 
 #[test]

@@ -17,6 +17,11 @@ fn v(x: f64, y: f64) -> Vec3 {
     Vec3::new(x, y, 0.0)
 }
 
+/// The disc parked off the route at (200, 330).
+fn parked() -> World {
+    World { obstacles: vec![disc(200.0, 330.0)], ..world_2d() }
+}
+
 fn disc(x: f64, y: f64) -> Obstacle {
     Obstacle::fixed(Shape::Circle { center: Vec2::new(x, y), radius: 60.0 })
 }
@@ -31,8 +36,8 @@ fn moved_disc(random: Option<RandomShift>) -> Change {
     }
 }
 
-fn run(id: &str, changes: &[Change], truth: &World, params: SimParams, seed: u64) -> Simulation {
-    let known = World { obstacles: vec![disc(200.0, 330.0)], ..world_2d() };
+/// Runs the loop on `world` (the world at departure) with `changes`.
+fn run(id: &str, changes: &[Change], world: &World, params: SimParams, seed: u64) -> Simulation {
     let mission = Mission::new("m", vehicle(), v(50.0, 200.0), v(950.0, 200.0), 0.0);
     let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
     let make = || registry().build(id, None, None, &EncodingSpec::default());
@@ -42,8 +47,7 @@ fn run(id: &str, changes: &[Change], truth: &World, params: SimParams, seed: u64
         false => Termination::default().with_wall_time(Duration::from_secs(60)),
     };
     let setup = Setup {
-        truth,
-        known: &known,
+        world,
         mission: &mission,
         changes,
         planner: &make,
@@ -75,9 +79,9 @@ fn assert_continuous(sim: &Simulation) {
 
 #[test]
 fn the_loop_replans_around_a_disc_that_moves_onto_the_route() {
-    let truth = World { obstacles: vec![disc(500.0, 200.0)], ..world_2d() };
+    let world = parked();
     for id in ["astar", "theta-star"] {
-        let sim = run(id, &[moved_disc(None)], &truth, SimParams::default(), 1);
+        let sim = run(id, &[moved_disc(None)], &world, SimParams::default(), 1);
         assert!(sim.reached && sim.complete, "{id}: {}", sim.reason);
         assert!(sim.track_violations.is_empty(), "{id}: {:?}", sim.track_violations);
         assert_eq!(sim.phases.len(), 2);
@@ -99,7 +103,7 @@ fn a_change_that_closes_the_way_ends_the_mission_naming_the_phase() {
     // A wall across the whole domain in front of the vehicle.
     let wall = Obstacle::fixed(Shape::Box { min: v(590.0, -10.0) - Vec3::Z, max: v(610.0, 410.0) + Vec3::Z });
     let close = Change { trigger: Trigger::AfterDistance(300.0), kind: ChangeKind::AddObstacle(wall), random: None };
-    let sim = run("theta-star", &[moved_disc(None), close], &world_2d(), SimParams::default(), 1);
+    let sim = run("theta-star", &[moved_disc(None), close], &parked(), SimParams::default(), 1);
     assert!(!sim.reached && sim.complete);
     assert!(sim.reason.starts_with("phase 2: no feasible window up to the goal"), "{}", sim.reason);
     assert_eq!(sim.phases.len(), 3);
@@ -112,7 +116,7 @@ fn a_change_that_closes_the_way_ends_the_mission_naming_the_phase() {
 fn the_same_seed_gives_the_same_simulation() {
     let shift = RandomShift { law: Law::Gaussian, scale: 80.0, max_draws: RandomShift::LFHH2019_MAX_DRAWS };
     let changes = [moved_disc(Some(shift))];
-    let truth = world_2d();
+    let truth = parked();
     let params = SimParams { policy: ReplanPolicy::Always, window: 1, ..SimParams::default() };
     let strip = |mut s: Simulation| {
         s.phases.iter_mut().filter_map(|p| p.replan.as_mut()).for_each(|r| r.planning_s = 0.0);

@@ -106,6 +106,7 @@ pub(super) fn replan(
             cost: m.cost,
             planning_s,
             warm,
+            focus: m.focus.clone(),
         };
         let cancelled = m.status == Status::Cancelled;
         if m.status.is_success() {
