@@ -6,7 +6,7 @@
 //! bottleneck named. The check never calls a reachable goal unreachable: its bounds only err
 //! towards "passable".
 
-use tidepath_search::{maximin, Grid2};
+use tidepath_search::{maximin, Grid2, SearchGrid};
 
 use super::Problem;
 use crate::geom::Vec3;
@@ -161,13 +161,23 @@ fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination, pinch
     let grid = Grid2::from_blocked(nx, ny, blocked).ok()?;
     let who = if problem.missions.len() > 1 { format!("{}: ", m.name) } else { String::new() };
     let found = maximin(&grid, &depth, s, g).ok()?;
-    let Some(bn) = found else {
-        let reason = format!("{who}goal unreachable: fixed obstacles and the domain's edges separate start and goal");
-        return Some(Reachability::Unreachable { reason, at: None });
-    };
     let centre = |cell: usize| {
         let (ci, cj) = (cell % nx, cell / nx);
         (b.min.x + (ci as f64 + 0.5) * dx, b.min.y + (cj as f64 + 0.5) * dy)
+    };
+    let Some(bn) = found else {
+        // Where the water the start reaches comes nearest the goal: the side of the cut.
+        let edge = nearest_reached(&grid, s, |c| {
+            let (x, y) = centre(c);
+            (x - m.goal.x).hypot(y - m.goal.y)
+        });
+        let (x, y) = centre(edge);
+        let reason = format!(
+            "{who}goal unreachable: fixed obstacles and the domain's edges separate start and goal; the water the start reaches ends nearest the goal at ({}), {:.0} m from it",
+            world.place(x, y),
+            (x - m.goal.x).hypot(y - m.goal.y)
+        );
+        return Some(Reachability::Unreachable { reason, at: Some(Vec3::new(x, y, m.start.z)) });
     };
     let bottleneck_at = |cell: usize, pinch: bool| {
         let (x, y) = centre(cell);
@@ -214,4 +224,26 @@ fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination, pinch
         None => bn.value.is_finite().then(|| bottleneck_at(bn.cell, false)),
     };
     Some(Reachability::Connected { bottleneck })
+}
+
+/// The cell of the start's connected region (the moves of [`SearchGrid`]) that minimises
+/// `distance` (the first found on a tie, in flood order, which is fixed).
+fn nearest_reached(grid: &Grid2, start: usize, distance: impl Fn(usize) -> f64) -> usize {
+    let mut seen = vec![false; grid.len()];
+    let mut stack = vec![start];
+    seen[start] = true;
+    let (mut best, mut best_d) = (start, distance(start));
+    while let Some(u) = stack.pop() {
+        grid.for_each_neighbour(u, |v| {
+            if !seen[v] {
+                seen[v] = true;
+                stack.push(v);
+            }
+        });
+        let d = distance(u);
+        if d < best_d {
+            (best, best_d) = (u, d);
+        }
+    }
+    best
 }

@@ -119,3 +119,23 @@ fn a_course_change_holds_from_its_time_in_the_true_world() {
         Shape::Circle { center: Vec2::new(600.0, -220.0), radius: 40.0 }
     );
 }
+
+#[test]
+fn a_stop_mid_segment_in_a_varying_current_keeps_the_track_on_its_own_clock() {
+    // A vortex makes the ground speed vary along the segment, flown in pieces of 20 m: a
+    // segment cut at the stop is flown in pieces of its own, and the stop is placed so that
+    // its arrival is exactly the trigger's time.
+    let vortex = crate::world::current::LambOseen { x: 500.0, y: 300.0, strength: 2000.0, core_radius: 150.0 };
+    let world = World { current: crate::world::Current::Vortices(vec![vortex]), ..world_2d() };
+    let settings = ModelSettings { current_step: 20.0, ..ModelSettings::default() };
+    let veh = vehicle();
+    let val = Validator::new(&world, &veh, &settings);
+    let (a, b) = (v(50.0, 200.0), v(950.0, 200.0));
+    let mut track = Track::new(a, 0.0);
+    let events = [Event::Trigger(Trigger::AtTime(333.0))];
+    let (_, ahead) = advance(&val, &[a, b], &events, &mut track).unwrap();
+    let (p, t) = track.now();
+    assert_eq!(ahead[0], p);
+    assert!((t - 333.0).abs() < 1e-6, "{t}");
+    assert_eq!(val.for_each_piece(a, p, 0.0, |_| {}).0, t, "the cut segment re-flown arrives at the track's time");
+}

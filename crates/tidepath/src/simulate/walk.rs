@@ -149,6 +149,7 @@ pub fn advance(v: &Validator<'_>, route: &[Vec3], pending: &[Event], track: &mut
             track.push(w[1], arrival);
             continue;
         };
+        let (p, t) = settle(v, w[0], w[1], t0, p, t, &pending[k]);
         // A stop on the next waypoint itself keeps no zero-length segment in the route.
         let ahead = &route[i + 1..];
         if p == w[1] {
@@ -161,6 +162,40 @@ pub fn advance(v: &Validator<'_>, route: &[Vec3], pending: &[Event], track: &mut
         return Some((k, std::iter::once(p).chain(ahead.iter().copied()).collect()));
     }
     None
+}
+
+/// The stop point and time on the track's own clock. The track is judged (and re-flown by
+/// any checker) segment by segment, and a segment cut at `p` is flown in pieces of its own,
+/// whose ground speeds in a varying current differ slightly from those of the whole
+/// segment's pieces: the stop time is therefore the arrival of the cut segment `a -> p`
+/// flown from `t0`. For a clock trigger, `p` is moved along `a -> b` (bisection, the arrival
+/// grows with the distance) until that arrival is the trigger's time, so the change still
+/// applies when it says. In still water or a uniform current the cut is already exact.
+fn settle(v: &Validator<'_>, a: Vec3, b: Vec3, t0: f64, p: Vec3, t: f64, event: &Event) -> (Vec3, f64) {
+    let arrival = |q: Vec3| v.for_each_piece(a, q, t0, |_| {}).0;
+    let tp = arrival(p);
+    if (tp - t).abs() <= 1e-12 * t.abs().max(1.0) {
+        return (p, t);
+    }
+    let Event::Trigger(Trigger::AtTime(at)) = *event else {
+        return (p, tp);
+    };
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    let mut best = (p, tp);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        let q = a.lerp(b, mid);
+        let tq = arrival(q);
+        if (tq - at).abs() < (best.1 - at).abs() {
+            best = (q, tq);
+        }
+        if tq < at {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    best
 }
 
 /// Every way the flown track breaks the rules of the world in force when the vehicle was
