@@ -8,11 +8,19 @@ The currents are made up, not a forecast: an M2 tide (period 12.42 h) flowing al
 depth, with a weak steady outflow of 0.1 m/s; land (elevation >= 0 in salish_topobathy.nc at the
 node) is _FillValue, as in the real products.
 
+With --update it writes crates/tidepath-io/data/salish_forecast_update.nc instead: the same
+grid and layout, a "newer forecast" issued at 2025-11-12T03:00Z (hourly for 30 hours from
+then) whose tide runs about 3 hours later and stronger (1.5 m/s at the surface), so that
+routes planned on the first forecast change when it arrives (the built-in scenario
+`forecast-update`). Without the option the original file is written, byte for byte as
+committed (netCDF4 1.7, netCDF 4.10.1, HDF5 2.2.0).
+
     python3 -m venv /tmp/venv && /tmp/venv/bin/pip install netCDF4 numpy
-    /tmp/venv/bin/python scripts/make_salish_forecast.py
+    /tmp/venv/bin/python scripts/make_salish_forecast.py [--update]
 """
 import math
 import os
+import sys
 
 import numpy as np
 from netCDF4 import Dataset
@@ -21,12 +29,26 @@ HERE = os.path.dirname(__file__)
 DATA = os.path.join(HERE, "..", "crates", "tidepath-io", "data")
 
 
-def main():
+# The two forecasts: file name, title, first time (hours after 2025-11-12T00:00Z), number of
+# hourly steps, M2 amplitude at the surface (m/s) and the tide's delay (hours).
+ORIGINAL = ("salish_forecast.nc", "Synthetic M2 tidal currents, Strait of Juan de Fuca (tidepath test data, not a forecast)", 0, 49, 1.2, 0.0)
+UPDATE = (
+    "salish_forecast_update.nc",
+    "Synthetic M2 tidal currents, Strait of Juan de Fuca, a later issue: tide 3 h later and stronger (tidepath test data, not a forecast)",
+    3,
+    31,
+    1.5,
+    3.0,
+)
+
+
+def main(update=False):
+    name, title, first, steps, amplitude, delay = UPDATE if update else ORIGINAL
     with Dataset(os.path.join(DATA, "salish_topobathy.nc")) as topo:
         tlon, tlat, elev = topo["lon"][:], topo["lat"][:], topo["elevation"][:]
     lon = np.round(np.arange(-125.25, -122.6, 1.0 / 12.0), 6)
     lat = np.round(np.arange(48.0, 49.1, 1.0 / 12.0), 6)
-    hours = np.arange(0, 49)  # 2025-11-12T00:00Z, hourly for two days
+    hours = np.arange(first, first + steps)  # hours after 2025-11-12T00:00Z, hourly
     t0 = 665016.0  # hours since 1950-01-01 of 2025-11-12T00:00Z
     depths = np.array([0.494, 10.0, 50.0], dtype="f4")
 
@@ -38,9 +60,9 @@ def main():
     mask = np.array([[land(lo, la) for lo in lon] for la in lat])
     flood = math.radians(100.0)  # direction towards which the flood flows, from north
     omega = 2.0 * math.pi / 12.42
-    out = os.path.join(DATA, "salish_forecast.nc")
+    out = os.path.join(DATA, name)
     with Dataset(out, "w", format="NETCDF4") as ds:
-        ds.title = "Synthetic M2 tidal currents, Strait of Juan de Fuca (tidepath test data, not a forecast)"
+        ds.title = title
         ds.Conventions = "CF-1.8"
         ds.createDimension("time", len(hours))
         ds.createDimension("depth", len(depths))
@@ -67,7 +89,7 @@ def main():
             data = np.ma.zeros((len(hours), len(depths), len(lat), len(lon)))
             for k, h in enumerate(hours):
                 for l, z in enumerate(depths):
-                    speed = 1.2 * math.cos(omega * h) * math.exp(-z / 60.0) - 0.1
+                    speed = amplitude * math.cos(omega * (h - delay)) * math.exp(-z / 60.0) - 0.1
                     data[k, l] = speed * comp(flood)
             data[:, :, mask] = np.ma.masked
             var[:] = data
@@ -75,4 +97,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    main(update="--update" in sys.argv[1:])

@@ -43,6 +43,7 @@ impl DataFile {
 pub const EMBEDDED: &[(&str, &[u8])] = &[
     ("salish_topobathy.nc", include_bytes!("../../data/salish_topobathy.nc")),
     ("salish_forecast.nc", include_bytes!("../../data/salish_forecast.nc")),
+    ("salish_forecast_update.nc", include_bytes!("../../data/salish_forecast_update.nc")),
 ];
 
 /// Refuses a file of no bytes in one line that says so (rather than a format's complaint

@@ -57,6 +57,11 @@ pub struct Scenario {
     pub frame: Option<tidepath::geo::GeoFrame>,
     /// The UTC instant of the scenario clock's zero, when the scenario gives one.
     pub epoch: Option<chrono::DateTime<chrono::Utc>>,
+    /// World changes (`[[changes]]`) in file order, in metres on the scenario clock; the
+    /// mission loop reveals each when its trigger fires (`plan` ignores them).
+    pub changes: Vec<tidepath::world::changes::Change>,
+    /// The mission loop's settings (`[simulate]`; `SimParams::default()` when absent).
+    pub simulate: tidepath::simulate::SimParams,
 }
 
 impl Scenario {
@@ -74,6 +79,16 @@ impl Scenario {
         warnings.extend(local.warnings);
         let missions = build_missions(&local.spec, &vehicle, &world, &mut warnings)?;
         let settings = build_settings(&spec.model, &world)?;
+        // Every change is checked now, so a bad one costs no run.
+        let cx = super::changes_build::ChangeContext {
+            world: &world,
+            metric: &local.spec.world,
+            frame: local.frame.as_ref(),
+            epoch: local.epoch,
+            source,
+        };
+        let changes = super::changes_build::build_changes(&spec.changes, &cx, &mut warnings)?;
+        let simulate = super::changes_build::build_simulate(spec.simulate.as_ref())?;
         let first = missions[0].clone();
         let scenario = Self {
             name: spec.name.clone(),
@@ -91,6 +106,8 @@ impl Scenario {
             planner: spec.planner.clone(),
             frame: local.frame,
             epoch: local.epoch,
+            changes,
+            simulate,
             spec,
             warnings,
         };
@@ -286,8 +303,13 @@ fn build_world(spec: &WorldSpec) -> Result<World> {
             format!("at most {MAX_OBSTACLES} obstacles, got {}", spec.obstacles.len()),
         ));
     }
-    let obstacles = spec.obstacles.iter().enumerate().map(|(i, o)| build_obstacle(i, o)).collect::<Result<Vec<_>>>()?;
-    let current = build_current(&spec.current, &bounds)?;
+    let obstacles = spec
+        .obstacles
+        .iter()
+        .enumerate()
+        .map(|(i, o)| build_obstacle(&format!("world.obstacles[{i}]"), o))
+        .collect::<Result<Vec<_>>>()?;
+    let current = build_current(&spec.current, &bounds, "world.current")?;
     Ok(World { bounds, dims, terrain, obstacles, current, frame: None })
 }
 
@@ -320,8 +342,9 @@ fn build_terrain(spec: &TerrainSpec, bounds: &Aabb) -> Result<Terrain> {
     })
 }
 
-fn build_obstacle(i: usize, spec: &ObstacleSpec) -> Result<Obstacle> {
-    let field = |name: &str| format!("world.obstacles[{i}].{name}");
+/// One obstacle, `at` naming it in errors (`world.obstacles[3]`, `changes[1].add`).
+pub(super) fn build_obstacle(at: &str, spec: &ObstacleSpec) -> Result<Obstacle> {
+    let field = |name: &str| format!("{at}.{name}");
     let kind = spec.kind;
     let needs = |name: &str, present: bool| -> Result<()> {
         if present {
@@ -420,15 +443,26 @@ fn kind_id(k: ObstacleKind) -> &'static str {
     }
 }
 
-fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
+/// A current, `at` naming it in errors (`world.current`, `changes[2].current`).
+pub(super) fn build_current(spec: &CurrentSpec, bounds: &Aabb, at: &str) -> Result<Current> {
+    build_world_current(spec, bounds, at).map_err(|e| match e {
+        // The jet, cell and grid builders name `world.current`.
+        Error::Input { field, message } if at != "world.current" && field.starts_with("world.current") => {
+            Error::input(format!("{at}{}", &field["world.current".len()..]), message)
+        }
+        e => e,
+    })
+}
+
+fn build_world_current(spec: &CurrentSpec, bounds: &Aabb, at: &str) -> Result<Current> {
     Ok(match spec {
         CurrentSpec::None => Current::None,
         CurrentSpec::Uniform { velocity } => Current::Uniform(Vec3::from_array(*velocity)),
         CurrentSpec::Vortices { vortices } => {
-            check_features("world.current.vortices", vortices.len())?;
+            check_features(&format!("{at}.vortices"), vortices.len())?;
             let mut out = Vec::with_capacity(vortices.len());
             for (i, v) in vortices.iter().enumerate() {
-                finite_positive(&format!("world.current.vortices[{i}].core_radius"), v.core_radius)?;
+                finite_positive(&format!("{at}.vortices[{i}].core_radius"), v.core_radius)?;
                 out.push(LambOseen { x: v.x, y: v.y, strength: v.strength, core_radius: v.core_radius });
             }
             Current::Vortices(out)
@@ -436,14 +470,13 @@ fn build_current(spec: &CurrentSpec, bounds: &Aabb) -> Result<Current> {
         CurrentSpec::Jet(jet) => Current::Jet(super::jet::build_jet(jet, bounds)?),
         // Geographic scenarios turn forecast files into grids before the world is built.
         CurrentSpec::File { .. } => {
-            return Err(Error::input("world.current.kind", "\"file\" needs world.frame = \"geographic\""))
+            return Err(Error::input(format!("{at}.kind"), "\"file\" needs world.frame = \"geographic\""))
         }
         CurrentSpec::Cells(cells) => Current::Grid(super::cells::build_current(cells)?),
         CurrentSpec::Grid { origin, spacing, shape, times, u, v, no_data } => {
-            let grid = grid2("world.current", *origin, *spacing, *shape)?;
+            let grid = grid2(at, *origin, *spacing, *shape)?;
             Current::Grid(
-                CurrentGrid::new(grid, times.clone(), u.clone(), v.clone(), "world.current")?
-                    .with_gaps(no_data.clone(), "world.current")?,
+                CurrentGrid::new(grid, times.clone(), u.clone(), v.clone(), at)?.with_gaps(no_data.clone(), at)?,
             )
         }
     })

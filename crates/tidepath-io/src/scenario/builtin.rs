@@ -50,6 +50,21 @@ pub const BUILTIN: &[Entry<&str>] = &[
         params: &[],
         build: include_str!("../../scenarios/headland.toml"),
     },
+    Entry {
+        id: "forecast-update",
+        description: "salish-forecast, with a newer current forecast arriving two hours into the transit",
+        citation: "elevation: matplotlib's topobathy sample; currents: two synthetic M2 forecasts (scripts/make_salish_forecast.py)",
+        params: &[],
+        build: include_str!("../../scenarios/forecast-update.toml"),
+    },
+    Entry {
+        id: "coastal-traffic",
+        description:
+            "2-D coastal transit past islands and a breakwater while ships cross the lane, seen within 1.5 km",
+        citation: "tidepath (synthetic)",
+        params: &[],
+        build: include_str!("../../scenarios/coastal-traffic.toml"),
+    },
 ];
 
 pub fn registry() -> Registry<&'static str> {

@@ -68,7 +68,7 @@ pub(crate) fn localise(spec: &ScenarioSpec, source: &str) -> Result<Localised> {
     Ok(Localised { spec: out, frame, epoch, warnings })
 }
 
-fn parse_instant(field: &str, text: &str) -> Result<DateTime<Utc>> {
+pub(super) fn parse_instant(field: &str, text: &str) -> Result<DateTime<Utc>> {
     let t = text.trim();
     DateTime::parse_from_rfc3339(t)
         .map(|d| d.with_timezone(&Utc))
@@ -167,35 +167,7 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
         point(&mut m.goal, &format!("missions[{i}].goal"))?;
     }
     for (i, o) in spec.world.obstacles.iter_mut().enumerate() {
-        if let Some(c) = &mut o.center {
-            if c.len() >= 2 {
-                let (x, y) = frame.forward(c[0], c[1], &format!("world.obstacles[{i}].center"))?;
-                c[0] = x;
-                c[1] = y;
-                // A velocity is given east and north (m/s).
-                if let Some(v) = &mut o.velocity {
-                    let (vx, vy) = east_north_to_frame(&frame, x, y, v[0], v[1]);
-                    *v = [vx, vy, v[2]];
-                }
-            }
-        }
-        if let (Some(a), Some(b)) = (&mut o.min, &mut o.max) {
-            // A lon/lat rectangle: covered whole, edges included (see geo_cover).
-            let field = format!("world.obstacles[{i}]");
-            let lonlat = GeoBox::new(a[0], a[1], b[0], b[1], &field)?;
-            let c = super::geo_cover::cover(&frame, &lonlat, &field)?;
-            if c.excess() > EXCESS_NOTE {
-                warnings.push(format!(
-                    "{field}: the lon/lat box is covered by a frame-aligned box {:.1} % larger (meridians converge, parallels curve); split it into smaller boxes for a tighter zone",
-                    100.0 * c.excess()
-                ));
-            }
-            [a[0], a[1], b[0], b[1]] = [c.lo[0], c.lo[1], c.hi[0], c.hi[1]];
-            if let (None, Some(v)) = (&o.center, &mut o.velocity) {
-                let (vx, vy) = east_north_to_frame(&frame, (a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0, v[0], v[1]);
-                *v = [vx, vy, v[2]];
-            }
-        }
+        project_obstacle(&frame, o, &format!("world.obstacles[{i}]"), warnings)?;
     }
     if let TerrainSpec::File { path, variable, positive, decimate, resolution } = &spec.world.terrain {
         let file = data_file(path, source, "world.terrain.path", warnings)?;
@@ -224,6 +196,47 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
         spec.world.terrain = resample(&grid, &frame, lo, hi, *resolution, warnings)?;
     }
     Ok(frame)
+}
+
+/// Projects one obstacle given in longitude/latitude (a `[[world.obstacles]]` entry, or a
+/// change's `add`, named `field` in errors) into the frame: its centre is projected, a
+/// lon/lat box is covered by the frame-aligned box holding it, and a velocity given east and
+/// north is turned into the frame's x and y at the obstacle's centre.
+pub(super) fn project_obstacle(
+    frame: &GeoFrame,
+    o: &mut ObstacleSpec,
+    field: &str,
+    warnings: &mut Vec<String>,
+) -> Result<()> {
+    if let Some(c) = &mut o.center {
+        if c.len() >= 2 {
+            let (x, y) = frame.forward(c[0], c[1], &format!("{field}.center"))?;
+            c[0] = x;
+            c[1] = y;
+            // A velocity is given east and north (m/s).
+            if let Some(v) = &mut o.velocity {
+                let (vx, vy) = east_north_to_frame(frame, x, y, v[0], v[1]);
+                *v = [vx, vy, v[2]];
+            }
+        }
+    }
+    if let (Some(a), Some(b)) = (&mut o.min, &mut o.max) {
+        // A lon/lat rectangle: covered whole, edges included (see geo_cover).
+        let lonlat = GeoBox::new(a[0], a[1], b[0], b[1], field)?;
+        let c = super::geo_cover::cover(frame, &lonlat, field)?;
+        if c.excess() > EXCESS_NOTE {
+            warnings.push(format!(
+                "{field}: the lon/lat box is covered by a frame-aligned box {:.1} % larger (meridians converge, parallels curve); split it into smaller boxes for a tighter zone",
+                100.0 * c.excess()
+            ));
+        }
+        [a[0], a[1], b[0], b[1]] = [c.lo[0], c.lo[1], c.hi[0], c.hi[1]];
+        if let (None, Some(v)) = (&o.center, &mut o.velocity) {
+            let (vx, vy) = east_north_to_frame(frame, (a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0, v[0], v[1]);
+            *v = [vx, vy, v[2]];
+        }
+    }
+    Ok(())
 }
 
 /// The longitude/latitude box holding the metric rectangle `lo`..`hi`, with a margin of 1%.
@@ -296,13 +309,8 @@ fn data_file(path: &str, source: &str, field: &str, warnings: &mut Vec<String>) 
     Ok(DataFile::Path(full))
 }
 
-/// Reads a current forecast file and rewrites `world.current` as a metric grid on the
-/// scenario clock: times are seconds after `epoch` (the file's first time when the scenario
-/// gives none), vectors are turned from east/north into the frame's x/y (which differ by the
-/// meridian convergence away from the origin), and water nodes without data (land or fill in
-/// the forecast, at any time step) become gaps: a motion through their cells is invalid and
-/// names where, since a current made up there could carry a plan onto the rocks. Counted in a
-/// warning. Returns the epoch used.
+/// Reads the world's current forecast file and rewrites `world.current` as a metric grid on
+/// the scenario clock (see [`forecast_grid`]). Returns the epoch used.
 fn load_currents(
     spec: &mut ScenarioSpec,
     frame: &GeoFrame,
@@ -310,20 +318,44 @@ fn load_currents(
     epoch: Option<DateTime<Utc>>,
     warnings: &mut Vec<String>,
 ) -> Result<DateTime<Utc>> {
-    let CurrentSpec::File { path, u, v, depth, resolution } = spec.world.current.clone() else { unreachable!() };
-    let file = data_file(&path, source, "world.current.path", warnings)?;
-    if Format::of(&file, "world.current.path")? != Format::NetCdf {
-        return Err(Error::input(
-            "world.current.path",
-            format!("`{path}`: current forecasts are read from NetCDF (.nc)"),
-        ));
+    let (grid, epoch) =
+        forecast_grid(&spec.world.current, "world.current", frame, &spec.world, source, epoch, warnings)?;
+    spec.world.current = grid;
+    Ok(epoch)
+}
+
+/// Reads the current forecast file of `current` (a `CurrentSpec::File`, named `field` in
+/// errors) over the metric domain of `world` (already in metres, its terrain resampled) and
+/// returns it as a metric `CurrentSpec::Grid` on the scenario clock, with the epoch used:
+/// times are seconds after `epoch` (the file's first time when the scenario gives none),
+/// vectors are turned from east/north into the frame's x/y (which differ by the meridian
+/// convergence away from the origin), and water nodes without data (land or fill in the
+/// forecast, at any time step) become gaps: a motion through their cells is invalid and
+/// names where, since a current made up there could carry a plan onto the rocks. Counted in a
+/// warning.
+pub(super) fn forecast_grid(
+    current: &CurrentSpec,
+    field: &str,
+    frame: &GeoFrame,
+    world: &WorldSpec,
+    source: &str,
+    epoch: Option<DateTime<Utc>>,
+    warnings: &mut Vec<String>,
+) -> Result<(CurrentSpec, DateTime<Utc>)> {
+    let CurrentSpec::File { path, u, v, depth, resolution } = current.clone() else {
+        return Err(Error::input(format!("{field}.kind"), "a forecast file needs kind = \"file\""));
+    };
+    let path_field = format!("{field}.path");
+    let file = data_file(&path, source, &path_field, warnings)?;
+    if Format::of(&file, &path_field)? != Format::NetCdf {
+        return Err(Error::input(path_field, format!("`{path}`: current forecasts are read from NetCDF (.nc)")));
     }
     let depth = depth.unwrap_or(0.0);
     if !depth.is_finite() || !(0.0..=12_000.0).contains(&depth) {
-        return Err(Error::input("world.current.depth", format!("must be from 0 to 12000 m, got {depth}")));
+        return Err(Error::input(format!("{field}.depth"), format!("must be from 0 to 12000 m, got {depth}")));
     }
-    let lo = [spec.world.bounds.min[0], spec.world.bounds.min[1]];
-    let hi = [spec.world.bounds.max[0], spec.world.bounds.max[1]];
+    let lo = [world.bounds.min[0], world.bounds.min[1]];
+    let hi = [world.bounds.max[0], world.bounds.max[1]];
     let subset = cover(frame, lo, hi)?;
     let series = read_currents(&file, u.as_deref(), v.as_deref(), depth, Some(&subset), 1)?;
     let epoch = match (epoch, series.times.first()) {
@@ -337,12 +369,12 @@ fn load_currents(
         series.times.iter().map(|t| (*t - epoch).num_milliseconds() as f64 / 1e3).collect()
     };
     let Some(first) = series.u.first() else {
-        return Err(Error::input("world.current.path", format!("`{path}`: no velocity layer inside the box")));
+        return Err(Error::input(path_field, format!("`{path}`: no velocity layer inside the box")));
     };
     // All time steps share the grid: their product stays within the forecast limit too.
     let max_nodes = (MAX_FORECAST_VALUES / series.u.len().max(1) as u64) as usize;
-    let m = MetricGrid::new(first, frame, (lo, hi), resolution, max_nodes, "world.current.resolution", warnings)?;
-    let water = water_test(&spec.world.terrain);
+    let m = MetricGrid::new(first, frame, (lo, hi), resolution, max_nodes, &format!("{field}.resolution"), warnings)?;
+    let water = water_test(&world.terrain);
     let mut gaps: Vec<usize> = Vec::new();
     let (mut us, mut vs) = (Vec::new(), Vec::new());
     for (gu, gv) in series.u.iter().zip(&series.v) {
@@ -371,17 +403,16 @@ fn load_currents(
     if let Some(&k) = gaps.first() {
         let (x, y) = m.xy(k);
         warnings.push(format!(
-            "world.current: {} water nodes have no current data at some time step (land or fill in the forecast); routes through them are refused; the first at {}",
+            "{field}: {} water nodes have no current data at some time step (land or fill in the forecast); routes through them are refused; the first at {}",
             gaps.len(),
             frame.place(x, y)
         ));
     }
     let (grid_origin, spacing, shape) = (m.origin, m.spacing, m.shape);
-    spec.world.current = CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs, no_data: gaps };
-    Ok(epoch)
+    Ok((CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs, no_data: gaps }, epoch))
 }
 
 /// A horizontal vector given east and north at the frame point (x, y), in the frame's x and y.
-fn east_north_to_frame(frame: &GeoFrame, x: f64, y: f64, east: f64, north: f64) -> (f64, f64) {
+pub(super) fn east_north_to_frame(frame: &GeoFrame, x: f64, y: f64, east: f64, north: f64) -> (f64, f64) {
     frame.east_north_to_xy(frame.inverse(x, y), (x, y), east, north)
 }

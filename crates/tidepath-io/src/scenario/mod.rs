@@ -7,6 +7,10 @@
 mod build;
 mod builtin;
 mod cells;
+mod changes_build;
+mod changes_spec;
+#[cfg(test)]
+mod changes_tests;
 mod geo_cover;
 pub mod geographic;
 mod jet;
@@ -16,6 +20,7 @@ mod route_frame;
 pub mod spec;
 
 pub use build::Scenario;
+pub use changes_build::{MAX_CHANGES, MAX_RANDOM_DRAWS};
 pub use builtin::{builtin, builtin_names, registry, BUILTIN};
 pub use plan::{default_time_limit_s, Components, LimitSource, PlanRequest, DEFAULT_TIME_LIMIT_S};
 pub use spec::ScenarioSpec;

@@ -8,6 +8,7 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
+pub use super::changes_spec::*;
 pub use tidepath::encoding::EncodingSpec;
 
 pub type P3 = [f64; 3];
@@ -35,6 +36,13 @@ pub struct ScenarioSpec {
     pub encoding: EncodingSpec,
     #[serde(default)]
     pub planner: PlannerSpec,
+    /// World changes revealed during the mission (`[[changes]]`), for `tidepath simulate`;
+    /// `plan` ignores them.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub changes: Vec<ChangeSpec>,
+    /// The mission loop's settings (`[simulate]`); defaults when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub simulate: Option<SimulateSpec>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
