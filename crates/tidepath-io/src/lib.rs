@@ -8,6 +8,7 @@
 //! * [`graph_file`]: a planner's search graphs as `plan --graph` writes them (GraphML, JSON);
 //! * [`export`]: GIS exports (GeoJSON, CSV, KML, GPX), written with `geojson`, `csv` and
 //!   `quick-xml` ([`csv_table`] is the one CSV writer);
+//! * [`simulation`]: `simulate` on a scenario and the simulation file it writes;
 //! * [`input`], [`output`]: input files read defensively, output files written all or none.
 //!
 //! The core (`tidepath`) carries no file-format dependency: every reader and writer of a file
@@ -22,6 +23,7 @@ pub mod output;
 pub mod plan_json;
 pub mod routes;
 pub mod scenario;
+pub mod simulation;
 
 pub use output::{write_atomic, OutputId, Outputs};
 pub use plan_json::{GraphReport, MissionReport, PlanAbout, PlanFile, PlanReport, RouteFrame, PLAN_FORMAT_VERSION};

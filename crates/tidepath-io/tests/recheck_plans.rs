@@ -4,6 +4,8 @@
 //! re-checked is asserted so the test cannot pass by checking nothing.
 
 mod common;
+/// Simulations re-checked the same way.
+mod simulate;
 
 use tidepath::planner::PLANNERS;
 use tidepath_io::scenario::{PlanRequest, Scenario};

@@ -111,6 +111,16 @@ impl Scenario {
         self.termination_for(req, None)
     }
 
+    /// The termination of one run of the planner of table entry `entry`: only the counts it
+    /// counts (as a plan of it gets).
+    pub(crate) fn termination_for_planner(
+        &self,
+        req: &PlanRequest,
+        entry: &Entry<BuildPlanner>,
+    ) -> Result<(Termination, LimitSource)> {
+        self.termination_for(req, Some(entry.build.caps.counts))
+    }
+
     fn termination_for(&self, req: &PlanRequest, counts: Option<&[Unit]>) -> Result<(Termination, LimitSource)> {
         let explicit = req.iterations.is_some()
             || req.evaluations.is_some()

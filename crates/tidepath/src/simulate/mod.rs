@@ -60,12 +60,13 @@ pub struct SimParams {
 
 impl SimParams {
     /// lfhh2019's window rule (docs/papers/lfhh2019.md, sections IV-E and IV-F): W = 20,
-    /// W <- W + 1 while no feasible piece is found, a re-plan at every change.
+    /// W <- W + 1 while no feasible piece is found, a re-plan at every change, each from a
+    /// fresh population (no warm start).
     pub const LFHH2019: SimParams = SimParams {
         window: 20,
         growth: Growth::Add(1),
         policy: ReplanPolicy::Always,
-        warm_start: true,
+        warm_start: false,
         sensor_range: None,
     };
 }
@@ -303,6 +304,10 @@ pub fn simulate(s: &Setup<'_>, rng: &mut Rng) -> Result<Simulation> {
         route_after: route.clone().unwrap_or_default(),
     });
     let Some(mut route) = route else {
+        if first.status == Status::Cancelled || total.interrupted().is_some() {
+            let why = format!("stopped during phase 0: {}", first.reason);
+            return Ok(finish(s, phases, track, vec![m.start, m.goal], ocean, Err(why), false));
+        }
         let why = format!("phase 0: no feasible route at departure: {}", first.reason);
         return Ok(finish(s, phases, track, vec![m.start, m.goal], ocean, Err(why), true));
     };
