@@ -145,6 +145,9 @@ pub struct Phase {
     pub change: Option<AppliedChange>,
     /// The obstacle seen in a sighting phase (its index in the true world).
     pub sighted: Option<usize>,
+    /// Whether the vehicle learnt anything: false for a change to a ship it has not seen and
+    /// for a skipped random change (nothing to check or re-plan).
+    pub revealed: bool,
     /// The true world after the phase: an index into [`Simulation::epochs`].
     pub epoch: usize,
     /// Which of that epoch's obstacles the vehicle knew after the phase.
@@ -296,6 +299,7 @@ pub fn simulate(s: &Setup<'_>, rng: &mut Rng) -> Result<Simulation> {
         time: m.departure_time,
         change: None,
         sighted: None,
+        revealed: true,
         epoch: 0,
         seen: ocean.seen.clone(),
         route_before: Vec::new(),
@@ -347,6 +351,7 @@ pub fn simulate(s: &Setup<'_>, rng: &mut Rng) -> Result<Simulation> {
             time: t,
             change: None,
             sighted: None,
+            revealed: true,
             epoch: ocean.epochs.len() - 1,
             seen: Vec::new(),
             route_before: route_before.clone(),
@@ -385,6 +390,7 @@ pub fn simulate(s: &Setup<'_>, rng: &mut Rng) -> Result<Simulation> {
         }
         phase.epoch = ocean.epochs.len() - 1;
         phase.seen = ocean.seen.clone();
+        phase.revealed = learned;
         if !learned {
             phase.route_after = route.clone();
             phases.push(phase);
