@@ -17,6 +17,7 @@ mod log_axis;
 mod obstacle_look;
 mod plan_view;
 mod profile;
+mod simulation;
 pub mod style;
 mod time_label;
 
@@ -25,6 +26,8 @@ pub use experiment::ExperimentFigures;
 pub use figure::{render_plan_figure, write_plan_figure, PlanFigure, FIGURE_SIZE};
 pub use plan_view::draw_plan_view;
 pub use profile::draw_profile;
+pub use simulation::{render_simulation_figure, write_simulation_figure, SimPanel, SimulationFigure};
+pub use tidepath::planner::Focus;
 
 use tidepath::geom::Vec3;
 use tidepath::path::Violation;

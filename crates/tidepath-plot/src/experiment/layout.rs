@@ -47,11 +47,11 @@ fn title_lines(title: &str, width: u32) -> Vec<String> {
     wrap(title, width.saturating_sub(2 * MARGIN) as f64 / BOLD_WIDTH, style::TITLE_PX)
 }
 
-pub(super) fn title_height(title: &str, width: u32) -> u32 {
+pub(crate) fn title_height(title: &str, width: u32) -> u32 {
     TITLE_H + title_lines(title, width).len().saturating_sub(1) as u32 * TITLE_LINE_H
 }
 
-pub(super) fn draw_title<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, title: &str) -> Result<()> {
+pub(crate) fn draw_title<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, title: &str) -> Result<()> {
     let (w, _) = root.dim_in_pixel();
     let style = style::bold(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Center));
     for (k, line) in title_lines(title, w).into_iter().enumerate() {
@@ -72,7 +72,7 @@ fn legend_width(width: u32) -> u32 {
 }
 
 /// Splits `text` into lines no wider than `width` pixels at `px`, at spaces.
-fn wrap(text: &str, width: f64, px: f64) -> Vec<String> {
+pub(crate) fn wrap(text: &str, width: f64, px: f64) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
     for word in text.split_whitespace() {
         match lines.last_mut() {
@@ -133,7 +133,7 @@ pub(super) fn draw_message<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, ms
     Ok(())
 }
 
-pub(super) fn render_svg(
+pub(crate) fn render_svg(
     size: (u32, u32),
     draw: impl FnOnce(&DrawingArea<SVGBackend, Shift>) -> Result<()>,
 ) -> Result<String> {

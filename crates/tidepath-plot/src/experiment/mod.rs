@@ -18,7 +18,7 @@
 mod boxplot_figure;
 mod convergence_figure;
 mod cost_axis;
-mod layout;
+pub(crate) mod layout;
 mod paths_figure;
 mod renderer;
 #[cfg(test)]

@@ -10,7 +10,7 @@ use super::super::flown::Drawn;
 use super::super::obstacle_look::{draw_circle_decor, ObstacleLook};
 use super::super::style::{self, plot_err};
 use super::super::{time_label, PlanFigure};
-use super::overlays::to_px;
+use super::overlays::{to_px, LabelBox};
 use super::Chart;
 use tidepath::error::Result;
 use tidepath::geom::{Vec2, Vec3};
@@ -74,7 +74,7 @@ pub(super) fn px_per_unit<DB: DrawingBackend>(chart: &Chart<DB>) -> f64 {
 
 /// Every obstacle at `fig.time`, in the look of its kind; `warn` lists obstacles to outline
 /// in the warning colour (those a failure's place is in).
-pub(super) fn draw_obstacles<DB: DrawingBackend>(
+pub(crate) fn draw_obstacles<DB: DrawingBackend>(
     chart: &Chart<DB>,
     fig: &PlanFigure,
     u: f64,
@@ -99,7 +99,7 @@ pub(super) fn draw_obstacles<DB: DrawingBackend>(
 
 /// The halo at the vehicle's safety distance around every obstacle (the caller decides whether
 /// it is wide enough to see).
-pub(super) fn draw_safety_halos<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure, u: f64) -> Result<()> {
+pub(crate) fn draw_safety_halos<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure, u: f64) -> Result<()> {
     let s = fig.safety_distance;
     let plot = chart.plotting_area();
     for o in &fig.world.obstacles {
@@ -145,6 +145,22 @@ pub(super) fn is_moving(o: &Obstacle) -> bool {
 pub(super) fn mark_text(fig: &PlanFigure, t: f64) -> String {
     format!("+{}", time_label::span(t - fig.time))
 }
+
+/// Obstacles that exist but are not known yet (not yet sighted), where they are at `time`:
+/// a faint dashed outline on a pale fill, so they read as there-but-unseen beside the known
+/// obstacles' solid outlines.
+pub(crate) fn draw_unseen<DB: DrawingBackend>(chart: &Chart<DB>, unseen: &[Obstacle], time: f64, u: f64) -> Result<()> {
+    let plot = chart.plotting_area();
+    for o in unseen {
+        let Some((pts, _, _)) = outline(&o.shape_at(time), u) else { continue };
+        plot.draw(&Polygon::new(pts.clone(), style::fill(style::OBSTACLE_FILL.mix(0.35)))).map_err(plot_err)?;
+        plot.draw(&DashedPathElement::new(pts, 4, 4, style::line(UNSEEN_EDGE, 1))).map_err(plot_err)?;
+    }
+    Ok(())
+}
+
+/// The outline of an obstacle not yet seen.
+pub(crate) const UNSEEN_EDGE: RGBAColor = RGBAColor(30, 30, 30, 0.7);
 
 /// Tracks of moving obstacles to the horizon, dashed outlines where they are at each mark.
 pub(super) fn draw_tracks<DB: DrawingBackend>(
@@ -220,16 +236,35 @@ pub(super) fn draw_mark_labels<DB: DrawingBackend>(
 }
 
 /// Where a timed path is at time `t` (linear between its points); `None` outside its times.
-pub(super) fn position_at(points: &[Vec3], times: &[f64], t: f64) -> Option<Vec3> {
+pub(crate) fn position_at(points: &[Vec3], times: &[f64], t: f64) -> Option<Vec3> {
     let k = times.windows(2).position(|w| w[0] <= t && t <= w[1])?;
     let (t0, t1) = (times[k], times[k + 1]);
     let f = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
     Some(points[k].lerp(points[k + 1], f))
 }
 
+/// Which speed labels [`draw_obstacle_motion`] writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum SpeedLabels {
+    /// Every moving obstacle's.
+    All,
+    /// Those inside the map and clear of the labels before them (the boxes given, and the
+    /// speed labels drawn); obstacles whose centre is off the map get no arrow either.
+    Clear,
+    /// None: the arrows alone (a small map), and only of obstacles whose centre is on it.
+    Off,
+}
+
 /// Velocity arrows of moving obstacles with their speed, drawn above paths and currents so the
-/// labels stay legible.
-pub(super) fn draw_obstacle_motion<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure, u: f64) -> Result<()> {
+/// labels stay legible. `boxes` holds labels already on the map; the speed labels drawn are
+/// added to it.
+pub(crate) fn draw_obstacle_motion<DB: DrawingBackend>(
+    chart: &Chart<DB>,
+    fig: &PlanFigure,
+    u: f64,
+    labels: SpeedLabels,
+    boxes: &mut Vec<LabelBox>,
+) -> Result<()> {
     let px = chart.plotting_area().strip_coord_spec();
     for o in fig.world.obstacles.iter().filter(|o| is_moving(o)) {
         let v = o.velocity.truncate();
@@ -237,6 +272,11 @@ pub(super) fn draw_obstacle_motion<DB: DrawingBackend>(chart: &Chart<DB>, fig: &
         let Some((_, centre, _)) = outline(&o.shape_at(fig.time), u) else { continue };
         // A fixed on-screen length: the arrow says where it is heading, the label how fast.
         let from = to_px(chart, centre.x / u, centre.y / u);
+        let (pw, ph) = px.dim_in_pixel();
+        let on_map = (0..=pw as i32).contains(&from.0) && (0..=ph as i32).contains(&from.1);
+        if labels != SpeedLabels::All && !on_map {
+            continue;
+        }
         let dir = v / speed;
         let to = (from.0 + (dir.x * 34.0).round() as i32, from.1 - (dir.y * 34.0).round() as i32);
         style::draw_arrow_px(&px, from, to, style::OBSTACLE_EDGE, 2)?;
@@ -249,7 +289,14 @@ pub(super) fn draw_obstacle_motion<DB: DrawingBackend>(chart: &Chart<DB>, fig: &
         let reach = reach_x.min(reach_y);
         let bx = to.0 + (dir.x * reach).round() as i32 - tw / 2;
         let by = to.1 - (dir.y * reach).round() as i32 - th / 2;
+        let overlaps = |b: &LabelBox| bx < b[1].0 && b[0].0 < bx + tw && by < b[1].1 && b[0].1 < by + th;
+        let inside = bx >= 0 && by >= 0 && bx + tw <= pw as i32 && by + th <= ph as i32;
+        let clear = inside && !boxes.iter().any(overlaps);
+        if labels == SpeedLabels::Off || labels == SpeedLabels::Clear && !clear {
+            continue;
+        }
         px.draw(&Rectangle::new([(bx, by), (bx + tw, by + th)], style::fill(WHITE.mix(0.85)))).map_err(plot_err)?;
+        boxes.push([(bx, by), (bx + tw, by + th)]);
         let centre = Pos::new(HPos::Center, VPos::Center);
         px.draw(&Text::new(text, (bx + tw / 2, by + th / 2), style::font(11.0).pos(centre))).map_err(plot_err)?;
     }

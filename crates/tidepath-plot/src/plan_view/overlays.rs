@@ -14,8 +14,8 @@ use tidepath::error::Result;
 use tidepath::geom::{Aabb, Vec2, Vec3};
 use tidepath::world::{Current, World};
 
-/// Current arrows across the view.
-const ARROW_CELLS: usize = 15;
+/// Current arrows across the view (each way) of a full-size plan view.
+pub(super) const ARROW_CELLS: usize = 15;
 
 /// Current arrows sampled on a coarse grid: (x, y, u, v) in metres and m/s, with the speed
 /// that maps to the longest arrow.
@@ -37,15 +37,22 @@ pub(super) fn scale_speed(max_speed: f64) -> f64 {
 }
 
 impl Quiver {
-    pub(super) fn sample(world: &World, time: f64, z: f64, (x0, y0, x1, y1): (f64, f64, f64, f64)) -> Option<Self> {
+    /// The arrows on a grid of `cells` x `cells` over the view.
+    pub(super) fn sample(
+        world: &World,
+        time: f64,
+        z: f64,
+        (x0, y0, x1, y1): (f64, f64, f64, f64),
+        cells: usize,
+    ) -> Option<Self> {
         if matches!(world.current, Current::None) {
             return None;
         }
-        let (sx, sy) = ((x1 - x0) / ARROW_CELLS as f64, (y1 - y0) / ARROW_CELLS as f64);
-        let mut arrows = Vec::with_capacity(ARROW_CELLS * ARROW_CELLS);
+        let (sx, sy) = ((x1 - x0) / cells as f64, (y1 - y0) / cells as f64);
+        let mut arrows = Vec::with_capacity(cells * cells);
         let mut max_speed: f64 = 0.0;
-        for j in 0..ARROW_CELLS {
-            for i in 0..ARROW_CELLS {
+        for j in 0..cells {
+            for i in 0..cells {
                 let (x, y) = (x0 + sx * (i as f64 + 0.5), y0 + sy * (j as f64 + 0.5));
                 // No arrow inside rock: the current there means nothing to the vehicle.
                 if world.terrain.elevation(x, y) > z {
@@ -71,7 +78,7 @@ impl Quiver {
 }
 
 /// Pixel position of a data point relative to the plotting area's top-left corner.
-pub(super) fn to_px<DB: DrawingBackend>(chart: &Chart<DB>, x: f64, y: f64) -> (i32, i32) {
+pub(crate) fn to_px<DB: DrawingBackend>(chart: &Chart<DB>, x: f64, y: f64) -> (i32, i32) {
     let (bx, by) = chart.plotting_area().get_base_pixel();
     let (px, py) = chart.backend_coord(&(x, y));
     (px - bx, py - by)
@@ -162,11 +169,15 @@ pub(super) fn draw_violated_waypoints<DB: DrawingBackend>(chart: &Chart<DB>, pat
     Ok(())
 }
 
+/// A label's box on the plotting area (pixels): top-left and bottom-right corners.
+pub(crate) type LabelBox = [(i32, i32); 2];
+
 /// The places failures are about: a ring with cross hairs, labelled with the focus's label and
-/// what is there (the seabed's depth, the obstacle it is in).
-pub(super) fn draw_focus<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure, u: f64) -> Result<()> {
+/// what is there (the seabed's depth, the obstacle it is in). Returns the labels' boxes.
+pub(crate) fn draw_focus<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure, u: f64) -> Result<Vec<LabelBox>> {
     let px = chart.plotting_area().strip_coord_spec();
     let (pw, ph) = px.dim_in_pixel();
+    let mut boxes = Vec::new();
     for f in fig.focus.iter().filter(|f| f.at.x.is_finite() && f.at.y.is_finite()) {
         let c = to_px(chart, f.at.x / u, f.at.y / u);
         px.draw(&Circle::new(c, 15, style::line(WHITE.mix(0.8), 6))).map_err(plot_err)?;
@@ -190,8 +201,9 @@ pub(super) fn draw_focus<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure
             let at = (bx + 6, by + 11 + 18 * k as i32);
             px.draw(&Text::new(l, at, font.pos(Pos::new(HPos::Left, VPos::Center)))).map_err(plot_err)?;
         }
+        boxes.push([(bx, by), (bx + tw, by + th)]);
     }
-    Ok(())
+    Ok(boxes)
 }
 
 /// Each path's line with a pale casing. A path without a flown curve has a dot at every
@@ -242,13 +254,16 @@ pub(super) fn flown_last<'p, 'a>(paths: &'p [PlotPath<'a>]) -> Vec<(usize, &'p P
     out
 }
 
-pub(super) fn draw_endpoints<DB: DrawingBackend>(
+/// The start and goal markers, each labelled on the side away from the first path; returns
+/// the labels' boxes.
+pub(crate) fn draw_endpoints<DB: DrawingBackend>(
     chart: &Chart<DB>,
     paths: &[PlotPath],
     start: Vec3,
     goal: Vec3,
     u: f64,
-) -> Result<()> {
+) -> Result<Vec<LabelBox>> {
+    let mut boxes = Vec::new();
     let px = chart.plotting_area().strip_coord_spec();
     let (pw, ph) = px.dim_in_pixel();
     let first = paths.iter().find(|p| p.points.len() >= 2).map(|p| p.points);
@@ -283,6 +298,7 @@ pub(super) fn draw_endpoints<DB: DrawingBackend>(
             .map(|c| c.0)
             .unwrap_or(c);
         px.draw(&Rectangle::new([best, (best.0 + tw, best.1 + th)], style::fill(WHITE.mix(0.85)))).map_err(plot_err)?;
+        boxes.push([best, (best.0 + tw, best.1 + th)]);
         px.draw(&Text::new(
             label,
             (best.0 + tw / 2, best.1 + th / 2),
@@ -290,5 +306,5 @@ pub(super) fn draw_endpoints<DB: DrawingBackend>(
         ))
         .map_err(plot_err)?;
     }
-    Ok(())
+    Ok(boxes)
 }
