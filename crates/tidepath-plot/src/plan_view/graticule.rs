@@ -57,7 +57,15 @@ fn lat_label(lat: f64, d: usize) -> String {
 /// Finds t in [a, b] where the monotonic `f` equals `target` (bisection); `None` outside.
 fn solve(f: impl Fn(f64) -> f64, target: f64, a: f64, b: f64) -> Option<f64> {
     let (fa, fb) = (f(a) - target, f(b) - target);
-    if fa.signum() == fb.signum() && fa != 0.0 && fb != 0.0 {
+    // An end on the target is the answer: bisecting from it (0.0's sign is +) would run to
+    // the other end.
+    if fa == 0.0 {
+        return Some(a);
+    }
+    if fb == 0.0 {
+        return Some(b);
+    }
+    if fa.signum() == fb.signum() {
         return None;
     }
     let (mut lo, mut hi) = (a, b);
@@ -148,6 +156,26 @@ mod tests {
             assert!((lat - label.trim_end_matches("°N").parse::<f64>().unwrap()).abs() < 1e-6, "{label}: {lat}");
         }
         assert_eq!(lon_label(-124.5, 1), "124.5°W");
+    }
+
+    /// A meridian through the view's corner (a frame whose origin is the corner) ticks that
+    /// corner, not the opposite edge.
+    #[test]
+    fn a_meridian_on_the_edge_is_ticked_there() {
+        let f = GeoFrame::new(-123.4, 48.3, "o").unwrap();
+        let g = Graticule::new(&f, (0.0, 0.0, 40e3, 30e3), 4, 4);
+        for (x, label) in &g.x_ticks {
+            let (lon, _) = f.inverse(*x, 0.0);
+            let want: f64 = label.trim_end_matches("°W").parse::<f64>().unwrap();
+            assert!((lon + want).abs() < 1e-6, "{label} at x = {x}: {lon}");
+        }
+        for (y, label) in &g.y_ticks {
+            let (_, lat) = f.inverse(0.0, *y);
+            assert!((lat - label.trim_end_matches("°N").parse::<f64>().unwrap()).abs() < 1e-6, "{label}: {lat}");
+        }
+        assert!(g.x_ticks.iter().any(|(x, l)| l == "123.4°W" && x.abs() < 1e-6), "{:?}", g.x_ticks);
+        assert_eq!(solve(|x| x, 0.0, 0.0, 1.0), Some(0.0));
+        assert_eq!(solve(|x| x, 1.0, 0.0, 1.0), Some(1.0));
         assert_eq!(lat_label(-3.25, 2), "3.25°S");
     }
 }
