@@ -33,6 +33,9 @@ enum Command {
     Planners(commands::planners::PlannersArgs),
     /// Plan a route on a scenario and print a summary.
     Plan(commands::plan::PlanArgs),
+    /// Fly a mission while the world changes (`[[changes]]`), re-planning a window of the route
+    /// ahead with any planner; per-phase lines, a simulation JSON and a figure.
+    Simulate(commands::simulate::SimulateArgs),
     /// Evaluate a plan JSON against a scenario: cost terms and feasibility.
     Eval(commands::eval::EvalArgs),
     /// Compare planners over many seeded runs: statistics, rank-sum marks, plots.
@@ -143,6 +146,7 @@ fn main() -> ExitCode {
         Command::Scenario(args) => commands::scenarios::show(&args),
         Command::Planners(args) => commands::planners::list(&args),
         Command::Plan(args) => commands::plan::run(&args),
+        Command::Simulate(args) => commands::simulate::run(&args),
         Command::Eval(args) => commands::eval::run(&args),
         Command::Compare(args) => commands::compare::run(&args),
         Command::Bench(args) => commands::bench::run(&args),

@@ -5,6 +5,10 @@
 #[path = "cli/graph.rs"]
 mod graph;
 
+// `simulate`, likewise.
+#[path = "cli/simulate.rs"]
+mod simulate;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

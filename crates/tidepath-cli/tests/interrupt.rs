@@ -1,5 +1,5 @@
 //! Ctrl-C everywhere: the first SIGINT stops `compare`, `bench functions`, `reproduce` and
-//! `plan` within a second, keeps and writes what finished (marked incomplete) and exits 130.
+//! `plan` and `simulate` within a second, keeps and writes what finished (marked incomplete) and exits 130.
 
 #![cfg(unix)]
 
@@ -120,4 +120,22 @@ fn a_cancelled_plan_with_a_feasible_best_exits_130_and_writes_it() {
         serde_json::from_str(&std::fs::read_to_string(dir.path().join("p.json")).unwrap()).unwrap();
     assert_eq!(plan["stop_reason"], "cancelled");
     assert_eq!(plan["missions"][0]["feasible"], true, "{stdout}");
+}
+
+/// An interrupted simulation writes the phases done, marked incomplete, and exits 130.
+#[test]
+fn an_interrupted_simulation_writes_its_phases_marked_incomplete() {
+    let dir = tempfile::tempdir().unwrap();
+    let (code, took, stdout) = interrupt(
+        dir.path(),
+        &["simulate", "coastal-traffic", "--planner", "pso", "--iterations", "100000000", "--out", "s.json"],
+        Duration::from_millis(1500),
+    );
+    assert_eq!(code, Some(130), "{stdout}");
+    assert!(took < Duration::from_secs(1), "{took:?}");
+    assert!(stdout.contains("incomplete"), "{stdout}");
+    let sim: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("s.json")).unwrap()).unwrap();
+    assert_eq!(sim["outcome"]["complete"], false);
+    assert!(sim["outcome"]["reason"].as_str().unwrap().starts_with("stopped"), "{}", sim["outcome"]["reason"]);
 }

@@ -6,3 +6,4 @@ pub mod plan;
 pub mod planners;
 pub mod reproduce;
 pub mod scenarios;
+pub mod simulate;
