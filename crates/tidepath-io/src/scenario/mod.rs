@@ -18,6 +18,7 @@ mod plan;
 mod resample;
 mod route_frame;
 pub mod spec;
+mod world_build;
 
 pub use build::Scenario;
 pub use changes_build::{MAX_CHANGES, MAX_RANDOM_DRAWS};

@@ -20,6 +20,33 @@ pub(super) fn vehicle() -> Vehicle {
     Vehicle { max_turn: std::f64::consts::PI, safety_distance: 5.0, depth_max: 200.0, ..Vehicle::default() }
 }
 
+/// Flies (50, 200) -> (950, 200) on `world` (the world at departure) with `changes`, planner
+/// `id`: sampling planners on 1500 samples a re-plan (so results do not depend on the
+/// machine), the others on a 60 s safety net.
+pub(super) fn fly(id: &str, world: &World, changes: &[Change], params: SimParams, seed: u64) -> Simulation {
+    use crate::cost::{GeneralCost, GeneralWeights};
+    use crate::planner::registry;
+    let mission = Mission::new("m", vehicle(), v(50.0, 200.0), v(950.0, 200.0), 0.0);
+    let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
+    let make = || registry().build(id, None, None, &crate::encoding::EncodingSpec::default());
+    let per_replan = match registry().find(id).is_some_and(|e| e.build.caps.randomised) {
+        true => Termination { max_samples: Some(1500), ..Termination::default() },
+        false => Termination::default().with_wall_time(std::time::Duration::from_secs(60)),
+    };
+    let setup = Setup {
+        world,
+        mission: &mission,
+        changes,
+        planner: &make,
+        cost: &cost,
+        settings: &ModelSettings::default(),
+        params,
+        per_replan: &per_replan,
+        total: &Termination::default(),
+    };
+    simulate(&setup, &mut crate::rng::run_rng(seed, 0)).unwrap()
+}
+
 fn v(x: f64, y: f64) -> Vec3 {
     Vec3::new(x, y, 0.0)
 }

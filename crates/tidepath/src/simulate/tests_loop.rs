@@ -1,15 +1,9 @@
 //! The whole loop on a small 2-D world: a disc moves onto the route mid-mission and the loop
 //! re-plans around it; the same seed gives the same simulation.
 
-use std::time::Duration;
-
-use super::tests::{vehicle, world_2d};
+use super::tests::world_2d;
 use super::*;
-use crate::cost::{GeneralCost, GeneralWeights};
-use crate::encoding::EncodingSpec;
 use crate::geom::Vec2;
-use crate::planner::registry;
-use crate::rng::run_rng;
 use crate::world::changes::{ChangeKind, Law, RandomShift};
 use crate::world::{Obstacle, Shape};
 
@@ -38,26 +32,7 @@ fn moved_disc(random: Option<RandomShift>) -> Change {
 
 /// Runs the loop on `world` (the world at departure) with `changes`.
 fn run(id: &str, changes: &[Change], world: &World, params: SimParams, seed: u64) -> Simulation {
-    let mission = Mission::new("m", vehicle(), v(50.0, 200.0), v(950.0, 200.0), 0.0);
-    let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
-    let make = || registry().build(id, None, None, &EncodingSpec::default());
-    // Sampling planners get a sample budget, so their results do not depend on the machine.
-    let per_replan = match registry().find(id).is_some_and(|e| e.build.caps.randomised) {
-        true => Termination { max_samples: Some(1500), ..Termination::default() },
-        false => Termination::default().with_wall_time(Duration::from_secs(60)),
-    };
-    let setup = Setup {
-        world,
-        mission: &mission,
-        changes,
-        planner: &make,
-        cost: &cost,
-        settings: &ModelSettings::default(),
-        params,
-        per_replan: &per_replan,
-        total: &Termination::default(),
-    };
-    simulate(&setup, &mut run_rng(seed, 0)).unwrap()
+    super::tests::fly(id, world, changes, params, seed)
 }
 
 /// No jump in space or time: times never decrease, no step is faster than the vehicle in

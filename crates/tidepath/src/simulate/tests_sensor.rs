@@ -1,15 +1,9 @@
 //! Ships seen only within sensor range, and the after-the-fact check against the true world
 //! of each moment.
 
-use std::time::Duration;
-
 use super::tests::{vehicle, world_2d};
 use super::*;
-use crate::cost::{GeneralCost, GeneralWeights};
-use crate::encoding::EncodingSpec;
 use crate::geom::Vec2;
-use crate::planner::registry;
-use crate::rng::run_rng;
 use crate::vehicle::Vehicle;
 use crate::world::Shape;
 
@@ -25,22 +19,7 @@ fn ship() -> Obstacle {
 }
 
 fn run(world: &World, changes: &[Change], params: SimParams) -> Simulation {
-    let mission = Mission::new("m", vehicle(), v(50.0, 200.0), v(950.0, 200.0), 0.0);
-    let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
-    let make = || registry().build("theta-star", None, None, &EncodingSpec::default());
-    let per_replan = Termination::default().with_wall_time(Duration::from_secs(60));
-    let setup = Setup {
-        world,
-        mission: &mission,
-        changes,
-        planner: &make,
-        cost: &cost,
-        settings: &ModelSettings::default(),
-        params,
-        per_replan: &per_replan,
-        total: &Termination::default(),
-    };
-    simulate(&setup, &mut run_rng(1, 0)).unwrap()
+    super::tests::fly("theta-star", world, changes, params, 1)
 }
 
 #[test]
