@@ -21,8 +21,8 @@ pub mod spec;
 mod world_build;
 
 pub use build::Scenario;
-pub use changes_build::{MAX_CHANGES, MAX_RANDOM_DRAWS};
 pub use builtin::{builtin, builtin_names, registry, BUILTIN};
+pub use changes_build::{MAX_CHANGES, MAX_RANDOM_DRAWS};
 pub use plan::{default_time_limit_s, Components, LimitSource, PlanRequest, DEFAULT_TIME_LIMIT_S};
 pub use spec::ScenarioSpec;
 
