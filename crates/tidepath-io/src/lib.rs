@@ -26,4 +26,7 @@ pub mod scenario;
 pub mod simulation;
 
 pub use output::{write_atomic, OutputId, Outputs};
-pub use plan_json::{GraphReport, MissionReport, PlanAbout, PlanFile, PlanReport, RouteFrame, PLAN_FORMAT_VERSION};
+pub use plan_json::{
+    ApproachReport, FleetReport, GraphReport, MissionReport, PlanAbout, PlanFile, PlanReport, RouteFrame,
+    PLAN_FORMAT_VERSION,
+};

@@ -165,6 +165,64 @@ pub struct PlanReport {
     /// the plan file (a graph can have 100 000 edges): [`crate::graph_file`] writes them.
     #[serde(skip)]
     pub graphs: Vec<GraphReport>,
+    /// A fleet's separation: the closest pair of vehicles and every pair that came too close
+    /// (only when the scenario keeps a separation).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fleet: Option<FleetReport>,
+}
+
+/// The fleet's separation, as the plan file gives it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FleetReport {
+    /// The closest approach of any two vehicles (`null` when no two are in the water together).
+    pub closest: Option<ApproachReport>,
+    /// Pairs closer than their separation.
+    pub conflicts: Vec<ApproachReport>,
+}
+
+/// Two vehicles at their closest.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ApproachReport {
+    /// The two missions' names.
+    pub vehicles: [String; 2],
+    pub distance_m: f64,
+    pub time_s: f64,
+    /// Where each vehicle is then.
+    pub positions: [[f64; 3]; 2],
+    /// The separation this pair must keep.
+    pub separation_m: f64,
+}
+
+impl FleetReport {
+    pub fn new(check: &tidepath::fleet::FleetCheck, rules: &tidepath::fleet::FleetRules, names: &[String]) -> Self {
+        let approach = |a: usize, b: usize, x: &tidepath::fleet::Approach| ApproachReport {
+            vehicles: [names[a].clone(), names[b].clone()],
+            distance_m: x.distance,
+            time_s: x.time,
+            positions: [x.at_a.to_array(), x.at_b.to_array()],
+            separation_m: rules.separation(a, b),
+        };
+        Self {
+            closest: check.closest.as_ref().map(|(a, b, x)| approach(*a, *b, x)),
+            conflicts: check.conflicts.iter().map(|c| approach(c.a, c.b, &c.approach)).collect(),
+        }
+    }
+
+    /// One line for summaries: "closest approach 212.4 m (auv-a and auv-b at t = 812.3 s);
+    /// separation kept" or "... 2 pairs closer than their separation".
+    pub fn line(&self) -> String {
+        let closest = match &self.closest {
+            Some(c) => format!(
+                "closest approach {:.1} m ({} and {} at t = {:.1} s)",
+                c.distance_m, c.vehicles[0], c.vehicles[1], c.time_s
+            ),
+            None => "no two vehicles in the water at once".to_string(),
+        };
+        match self.conflicts.len() {
+            0 => format!("{closest}; separation kept"),
+            n => format!("{closest}; {n} pair(s) closer than their separation"),
+        }
+    }
 }
 
 /// One mission's search graph (a tree or a roadmap), as `plan --graph` writes it.
@@ -305,6 +363,7 @@ impl PlanReport {
             history: s.history.iter().map(|h| finite(*h)).collect(),
             geographic: None,
             graphs: plan.graphs.iter().map(|g| GraphReport::new(g, &plan.missions)).collect(),
+            fleet: None,
         }
     }
 

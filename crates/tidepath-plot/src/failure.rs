@@ -11,7 +11,14 @@ use super::{style, PlanFigure, PlotPath};
 /// Whether a violation's index is a segment's (joining waypoints i and i + 1) rather than a
 /// waypoint's.
 pub fn on_segment(kind: ViolationKind) -> bool {
-    matches!(kind, ViolationKind::Terrain | ViolationKind::Obstacle | ViolationKind::Current | ViolationKind::Pitch)
+    matches!(
+        kind,
+        ViolationKind::Terrain
+            | ViolationKind::Obstacle
+            | ViolationKind::Current
+            | ViolationKind::Pitch
+            | ViolationKind::Separation
+    )
 }
 
 /// A violation kind in a word or two, for legends.
@@ -25,6 +32,7 @@ pub fn short_name(kind: ViolationKind) -> &'static str {
         ViolationKind::Depth => "depth band",
         ViolationKind::Turn => "turn",
         ViolationKind::Endpoint => "misses start or goal",
+        ViolationKind::Separation => "too close to another vehicle",
     }
 }
 

@@ -46,7 +46,8 @@ fn bench(c: &mut Criterion) {
     let missions = [Mission::new("m", vehicle, START, GOAL, 0.0)];
     let settings = ModelSettings::default();
     let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
-    let problem = Problem { world: &w, settings: &settings, cost: &cost, missions: &missions };
+    let problem =
+        Problem { world: &w, settings: &settings, cost: &cost, missions: &missions, fleet: &tidepath::fleet::NO_FLEET };
     let run = || {
         let mut planner =
             HybridAstar::new(HybridAstarParams::default().checked("planner.params.hybrid-astar").unwrap());

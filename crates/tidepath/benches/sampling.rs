@@ -59,7 +59,13 @@ fn bench(c: &mut Criterion) {
         let z = if dims == Dims::Three { -200.0 } else { 0.0 };
         let missions =
             [Mission::new("m", vehicle.clone(), Vec3::new(10000.0, 1000.0, z), Vec3::new(10000.0, 39000.0, z), 0.0)];
-        let problem = Problem { world: &w, settings: &settings, cost: &cost, missions: &missions };
+        let problem = Problem {
+            world: &w,
+            settings: &settings,
+            cost: &cost,
+            missions: &missions,
+            fleet: &tidepath::fleet::NO_FLEET,
+        };
         let t = Termination { max_samples: Some(10_000), ..Termination::default() };
         let run = |planner: &mut dyn Planner, seed| {
             let mut rng = tidepath::rng::run_rng(seed, 0);

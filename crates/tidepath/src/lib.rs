@@ -13,6 +13,7 @@ pub mod config;
 pub mod cost;
 pub mod encoding;
 pub mod error;
+pub mod fleet;
 pub mod geo;
 pub mod geom;
 pub mod kinematics;

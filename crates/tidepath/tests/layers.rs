@@ -38,6 +38,7 @@ const ORDER: &[&str] = &[
     "validity",
     "raster",
     "path",
+    "fleet",
     "cost",
     "encoding",
     "termination",

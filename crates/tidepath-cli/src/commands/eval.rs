@@ -78,6 +78,10 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
     if several {
         println!("  total cost {total:.9}");
     }
+    if let Some(check) = scenario.fleet_check(&judged) {
+        let names: Vec<String> = judged.iter().map(|m| m.name.clone()).collect();
+        println!("  fleet: {}", tidepath_io::FleetReport::new(&check, &scenario.fleet, &names).line());
+    }
     if let Some(recorded) = plan.cost {
         let rel = (total - recorded).abs() / recorded.abs().max(f64::MIN_POSITIVE);
         println!("  recorded cost {recorded:.9}; relative difference {rel:.2e}");

@@ -311,6 +311,9 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
             println!("{indent}... and {} more violations", m.violations.len() - 8);
         }
     }
+    if let Some(f) = &r.fleet {
+        println!("  fleet          {}", f.line());
+    }
     // What this planner counted: evaluations and iterations (optimizers), expansions (graph
     // search), samples (sampling planners), and the graph it built.
     let mut parts = Vec::new();

@@ -30,6 +30,7 @@ fn report() -> PlanReport {
         cost: 0.0,
         stats: SearchStats::default(),
         graphs: vec![tree, roadmap],
+        fleet: None,
     };
     let mut r = PlanReport::new(&plan, PlanAbout { scenario: "s & <t>".into(), ..PlanAbout::default() });
     r.graphs[0].mission = "alpha <1> & \"b\"".into();

@@ -54,6 +54,8 @@ pub struct Scenario {
     pub changes: Vec<tidepath::world::changes::Change>,
     /// The mission loop's settings (`[simulate]`; `SimParams::default()` when absent).
     pub simulate: tidepath::simulate::SimParams,
+    /// The separation the missions' vehicles keep (`[fleet]`; none when absent).
+    pub fleet: tidepath::fleet::FleetRules,
 }
 
 impl Scenario {
@@ -81,6 +83,7 @@ impl Scenario {
         };
         let changes = super::changes_build::build_changes(&spec.changes, &cx, &mut warnings)?;
         let simulate = super::changes_build::build_simulate(spec.simulate.as_ref())?;
+        let fleet = super::fleet_spec::build_fleet(spec.fleet.as_ref(), &missions, &mut warnings)?;
         let first = missions[0].clone();
         let scenario = Self {
             name: spec.name.clone(),
@@ -100,6 +103,7 @@ impl Scenario {
             epoch: local.epoch,
             changes,
             simulate,
+            fleet,
             spec,
             warnings,
         };
@@ -155,7 +159,7 @@ impl Scenario {
 
     /// The planning problem: this world, `cost`, and every mission.
     pub fn problem<'a>(&'a self, cost: &'a dyn CostModel) -> Problem<'a> {
-        Problem { world: &self.world, settings: &self.settings, cost, missions: &self.missions }
+        Problem { world: &self.world, settings: &self.settings, cost, missions: &self.missions, fleet: &self.fleet }
     }
 
     pub fn cost_model(&self) -> Result<Box<dyn CostModel>> {

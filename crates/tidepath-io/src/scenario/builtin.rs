@@ -65,6 +65,13 @@ pub const BUILTIN: &[Entry<&str>] = &[
         params: &[],
         build: include_str!("../../scenarios/coastal-traffic.toml"),
     },
+    Entry {
+        id: "fleet-crossing",
+        description: "2-D: two vehicles whose straight routes cross at the same moment; they must keep 150 m apart",
+        citation: "tidepath (synthetic)",
+        params: &[],
+        build: include_str!("../../scenarios/fleet-crossing.toml"),
+    },
 ];
 
 pub fn registry() -> Registry<&'static str> {

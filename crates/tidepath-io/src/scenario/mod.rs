@@ -11,6 +11,7 @@ mod changes_build;
 mod changes_spec;
 #[cfg(test)]
 mod changes_tests;
+mod fleet_spec;
 mod geo_cover;
 pub mod geographic;
 mod jet;
@@ -23,6 +24,7 @@ mod world_build;
 pub use build::Scenario;
 pub use builtin::{builtin, builtin_names, registry, BUILTIN};
 pub use changes_build::{MAX_CHANGES, MAX_RANDOM_DRAWS};
+pub use fleet_spec::{FleetSpec, PairSpec, PresenceId};
 pub use plan::{default_time_limit_s, Components, LimitSource, PlanRequest, DEFAULT_TIME_LIMIT_S};
 pub use spec::ScenarioSpec;
 

@@ -312,7 +312,10 @@ impl Scenario {
             default_time_cap: limit_source == LimitSource::DefaultCap,
             warm_start: req.init.is_some(),
         };
-        Ok(PlanReport::new(&plan, about).with_frame(self.frame.as_ref(), self.epoch))
+        let mut report = PlanReport::new(&plan, about).with_frame(self.frame.as_ref(), self.epoch);
+        let names: Vec<String> = plan.missions.iter().map(|m| m.name.clone()).collect();
+        report.fleet = plan.fleet.as_ref().map(|c| crate::FleetReport::new(c, &self.fleet, &names));
+        Ok(report)
     }
 
     /// Judges one path per mission (start and goal included).
@@ -339,11 +342,25 @@ impl Scenario {
                 ),
             ));
         }
-        Ok(paths
+        let models: Vec<_> = (0..paths.len()).map(|i| self.mission_model(i)).collect();
+        let mut missions: Vec<MissionPlan> = paths
             .iter()
             .enumerate()
-            .map(|(i, p)| planner::solve::judge(&self.mission_model(i), cost.as_ref(), p, &self.missions[i].name))
-            .collect())
+            .map(|(i, p)| planner::solve::judge(&models[i], cost.as_ref(), p, &self.missions[i].name))
+            .collect();
+        planner::judge_fleet(&models, &mut missions, &self.fleet);
+        Ok(missions)
+    }
+
+    /// The fleet's verdict on `missions` (their final paths): the closest pair and every
+    /// separation conflict, `None` when the scenario keeps no separation.
+    pub fn fleet_check(&self, missions: &[MissionPlan]) -> Option<tidepath::fleet::FleetCheck> {
+        if !self.fleet.active(missions.len()) {
+            return None;
+        }
+        let models: Vec<_> = (0..missions.len()).map(|i| self.mission_model(i)).collect();
+        let paths: Vec<&[Vec3]> = missions.iter().map(|m| m.path()).collect();
+        Some(tidepath::fleet::check(&models, &paths, &self.fleet, &mut Vec::new()))
     }
 
     /// Judges a path of the first mission.

@@ -43,6 +43,9 @@ pub struct ScenarioSpec {
     /// The mission loop's settings (`[simulate]`); defaults when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub simulate: Option<SimulateSpec>,
+    /// The separation a fleet's vehicles keep from each other (`[fleet]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fleet: Option<super::fleet_spec::FleetSpec>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]

@@ -18,6 +18,8 @@ pub enum ViolationKind {
     Current,
     Turn,
     Pitch,
+    /// Two vehicles of a fleet come closer than their separation at the same time.
+    Separation,
 }
 
 /// One violated constraint. `index` is a waypoint index for bounds, depth and turn, a segment

@@ -8,6 +8,7 @@
 //! evaluates each path with the shared path evaluation and sets the [`Status`].
 
 pub mod capabilities;
+mod fleet_judge;
 pub mod grid_search;
 pub mod hybrid;
 pub mod hybrid_astar;
@@ -19,6 +20,7 @@ pub mod registry;
 pub mod sampling;
 mod sliced_hint;
 pub mod solve;
+pub use fleet_judge::judge_fleet;
 mod status;
 pub mod visibility;
 
@@ -47,6 +49,9 @@ pub struct Problem<'a> {
     pub settings: &'a ModelSettings,
     pub cost: &'a dyn CostModel,
     pub missions: &'a [Mission],
+    /// The separation the missions' vehicles keep from each other ([`crate::fleet::NO_FLEET`]
+    /// for none).
+    pub fleet: &'a crate::fleet::FleetRules,
 }
 
 impl<'a> Problem<'a> {

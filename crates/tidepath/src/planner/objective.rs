@@ -45,6 +45,25 @@ impl<'a> PathObjective<'a> {
     }
 }
 
+impl PathObjective<'_> {
+    /// The missions' costs plus the fleet's separation penalty ([`crate::fleet::FleetCheck::penalty`]),
+    /// every path decoded into its own reused buffer so all are at hand for the pairwise check.
+    fn evaluate_fleet(&self, x: &[f64], scratch: &mut Scratch) -> f64 {
+        let mut paths = std::mem::take(&mut scratch.paths);
+        let mut legs = std::mem::take(&mut scratch.legs);
+        paths.resize_with(self.encodings.len(), Vec::new);
+        let mut total = 0.0;
+        for (i, e) in self.encodings.iter().enumerate() {
+            e.decode_into(&x[self.offsets[i]..self.offsets[i + 1]], &mut paths[i]);
+            total += self.problem.cost.cost(&self.models[i], &paths[i], scratch);
+        }
+        total += crate::fleet::check(&self.models, &paths, self.problem.fleet, &mut legs).penalty();
+        scratch.paths = paths;
+        scratch.legs = legs;
+        total
+    }
+}
+
 impl Objective for PathObjective<'_> {
     fn dim(&self) -> usize {
         self.lower.len()
@@ -59,6 +78,9 @@ impl Objective for PathObjective<'_> {
     }
 
     fn evaluate(&self, x: &[f64], scratch: &mut Scratch) -> f64 {
+        if self.problem.fleet.active(self.encodings.len()) {
+            return self.evaluate_fleet(x, scratch);
+        }
         // Move the point buffer out so the cost model can borrow the rest of the scratch;
         // moving a Vec does not allocate.
         let mut points = std::mem::take(&mut scratch.points);

@@ -101,6 +101,9 @@ pub struct Plan {
     /// The search graphs the planner kept ([`RunOptions::record_graph`]), each naming its
     /// mission by its index in the problem.
     pub graphs: Vec<SearchGraph>,
+    /// The fleet's closest pair and separation conflicts, when the problem has a separation
+    /// to keep.
+    pub fleet: Option<crate::fleet::FleetCheck>,
 }
 
 impl Plan {
@@ -202,7 +205,8 @@ pub fn solve(
     if !planned.is_empty() {
         // The planner sees only the missions it can plan, in their order.
         let subset: Vec<Mission> = planned.iter().map(|&i| problem.missions[i].clone()).collect();
-        let sub = Problem { missions: &subset, ..*problem };
+        let sub_fleet = problem.fleet.subset(&planned);
+        let sub = Problem { missions: &subset, fleet: &sub_fleet, ..*problem };
         // Whether this planner takes this problem (a setting, or a world it does not cover).
         planner.check(&sub)?;
         let init: Option<Vec<Vec<Vec3>>> =
@@ -245,6 +249,8 @@ pub fn solve(
             g.mission = planned.get(g.mission).copied().unwrap_or(g.mission);
         }
     }
+    // The fleet's separation, on the vehicles' own clocks: a conflict makes both infeasible.
+    let fleet = super::fleet_judge::judge_fleet(&models, &mut missions, problem.fleet);
     // Each planned mission's status from its own direct checks and why the run stopped.
     for (k, &i) in planned.iter().enumerate() {
         let m = &mut missions[i];
@@ -314,7 +320,7 @@ pub fn solve(
     }
     let cost = missions.iter().map(|m| m.cost).sum();
     let (status, reason) = overall(&missions);
-    Ok(Plan { planner: id, status, reason, missions, cost, stats, graphs })
+    Ok(Plan { planner: id, status, reason, missions, cost, stats, graphs, fleet })
 }
 
 /// The plan's status: the worst of its missions'; the reason is that mission's, named when

@@ -87,7 +87,13 @@ pub(super) fn replan(
         let budget = replan_budget(s.per_replan, s.total);
         let sub = Mission { start: route[0], goal: route[w], departure_time: t, ..s.mission.clone() };
         let missions = [sub];
-        let problem = Problem { world: known, settings: s.settings, cost: s.cost, missions: &missions };
+        let problem = Problem {
+            world: known,
+            settings: s.settings,
+            cost: s.cost,
+            missions: &missions,
+            fleet: &crate::fleet::NO_FLEET,
+        };
         let mut planner = (s.planner)()?;
         let warm = warm_allowed && s.params.warm_start && takes_warm_start(planner.id());
         let init = [route[..=w].to_vec()];

@@ -47,7 +47,8 @@ fn plan(w: &World, m: &Mission, table: &str, termination: Termination) -> Plan {
     let settings = ModelSettings::default();
     let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
     let missions = [m.clone()];
-    let problem = Problem { world: w, settings: &settings, cost: &cost, missions: &missions };
+    let problem =
+        Problem { world: w, settings: &settings, cost: &cost, missions: &missions, fleet: &crate::fleet::NO_FLEET };
     let mut planner = HybridAstar::new(params(table));
     let mut rng = crate::rng::run_rng(1, 0);
     solve(&mut planner, &problem, &termination, &mut rng, SolveOptions::default(), &mut |_| {}).unwrap()

@@ -58,7 +58,8 @@ fn run(planner: &mut dyn Planner, w: &World, m: &Mission, termination: Terminati
     let settings = ModelSettings::default();
     let cost = cost();
     let missions = [m.clone()];
-    let problem = Problem { world: w, settings: &settings, cost: &cost, missions: &missions };
+    let problem =
+        Problem { world: w, settings: &settings, cost: &cost, missions: &missions, fleet: &crate::fleet::NO_FLEET };
     let mut rng = crate::rng::run_rng(seed, 0);
     solve(planner, &problem, &termination, &mut rng, SolveOptions::default(), &mut |_| {}).unwrap()
 }
@@ -193,7 +194,8 @@ fn rewiring_retimes_the_subtree_and_refuses_what_the_clock_makes_invalid() {
     let settings = ModelSettings::default();
     let cost = cost();
     let missions = [m];
-    let problem = Problem { world: &w, settings: &settings, cost: &cost, missions: &missions };
+    let problem =
+        Problem { world: &w, settings: &settings, cost: &cost, missions: &missions, fleet: &crate::fleet::NO_FLEET };
     let mut edges = Edges::new(&problem, 0, 1.0, &|| false).unwrap();
     assert!(edges.time_varying);
     let t = Termination::default();
@@ -318,7 +320,8 @@ fn a_warm_start_seeds_the_tree_and_the_roadmap() {
     let settings = ModelSettings::default();
     let cost = cost();
     let missions = [m.clone()];
-    let problem = Problem { world: &w, settings: &settings, cost: &cost, missions: &missions };
+    let problem =
+        Problem { world: &w, settings: &settings, cost: &cost, missions: &missions, fleet: &crate::fleet::NO_FLEET };
     let mut planners: Vec<Box<dyn Planner>> = vec![Box::new(rrt("", false)), Box::new(prm(""))];
     for p in planners.iter_mut() {
         let mut rng = crate::rng::run_rng(1, 0);

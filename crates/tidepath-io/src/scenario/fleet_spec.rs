@@ -1,0 +1,71 @@
+//! The scenario file's `[fleet]` section: the separation a fleet's vehicles keep from each
+//! other in time, and where a vehicle is outside its mission. Built into
+//! `tidepath::fleet::FleetRules`, by mission name.
+
+use serde::{Deserialize, Serialize};
+
+use tidepath::error::{Error, Result};
+use tidepath::fleet::{FleetRules, Presence};
+use tidepath::mission::Mission;
+
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FleetSpec {
+    /// Least distance (m) between any two vehicles at the same moment, each on its own travel
+    /// clock (default 0: not checked).
+    #[serde(default)]
+    pub separation_m: f64,
+    /// "stays" (default): a vehicle waits at its start before departing and stays at its goal
+    /// after arriving; "leaves": it is in the water only between departure and arrival.
+    #[serde(default)]
+    pub presence: PresenceId,
+    /// Per-pair overrides: `{ vehicles = ["auv-a", "auv-b"], separation_m = 50.0 }`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub pairs: Vec<PairSpec>,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum PresenceId {
+    #[default]
+    Stays,
+    Leaves,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PairSpec {
+    /// The two missions' names.
+    pub vehicles: [String; 2],
+    pub separation_m: f64,
+}
+
+/// The rules of `spec` for `missions`; a warning when a separation is set for one vehicle.
+pub fn build_fleet(spec: Option<&FleetSpec>, missions: &[Mission], warnings: &mut Vec<String>) -> Result<FleetRules> {
+    let Some(spec) = spec else { return Ok(FleetRules::default()) };
+    let index = |k: usize, name: &str| -> Result<usize> {
+        missions.iter().position(|m| m.name == name).ok_or_else(|| {
+            let names: Vec<&str> = missions.iter().map(|m| m.name.as_str()).collect();
+            Error::input(
+                format!("fleet.pairs[{k}].vehicles"),
+                format!("no mission is named '{name}' (missions: {})", names.join(", ")),
+            )
+        })
+    };
+    let mut pairs = Vec::with_capacity(spec.pairs.len());
+    for (k, p) in spec.pairs.iter().enumerate() {
+        pairs.push((index(k, &p.vehicles[0])?, index(k, &p.vehicles[1])?, p.separation_m));
+    }
+    let presence = match spec.presence {
+        PresenceId::Stays => Presence::Stays,
+        PresenceId::Leaves => Presence::Leaves,
+    };
+    let rules = FleetRules { separation_m: spec.separation_m, pairs, presence };
+    rules.check(missions.len())?;
+    if missions.len() < 2 && rules.separation_m > 0.0 {
+        warnings.push(
+            "fleet.separation_m: the scenario has one mission, so there is no other vehicle to keep apart from".into(),
+        );
+    }
+    Ok(rules)
+}

@@ -1,0 +1,54 @@
+//! Fleets keeping their separation: the exact check of the plans against the independent
+//! sampler of `common/`, on `fleet-crossing`.
+
+use tidepath::geom::Vec3;
+use tidepath::path::ViolationKind;
+use tidepath_io::scenario::{PlanRequest, Scenario};
+
+use crate::common::{recheck_plan, recheck_separation};
+
+fn crossing() -> Scenario {
+    tidepath_io::scenario::load("fleet-crossing").unwrap()
+}
+
+#[test]
+fn the_straight_line_plan_is_infeasible_naming_both_vehicles_and_the_time() {
+    let s = crossing();
+    let straight: Vec<Vec<Vec3>> = s.missions.iter().map(|m| vec![m.start, m.goal]).collect();
+    let judged = s.evaluate_paths(&straight).unwrap();
+    for m in &judged {
+        assert!(!m.feasible, "{}", m.name);
+        let v = m.violations.iter().find(|v| v.kind == ViolationKind::Separation).unwrap();
+        // Both at (2000, 2000) at t = 1000 s: 1500 m at 1.5 m/s.
+        assert!(v.message.contains("auv-east and auv-north come within 0.0 m"), "{}", v.message);
+        assert!(v.message.contains("t = 1000.0 s"), "{}", v.message);
+    }
+    let check = s.fleet_check(&judged).unwrap();
+    assert_eq!(check.conflicts.len(), 1);
+    assert!((check.closest.unwrap().2.time - 1000.0).abs() < 1e-6);
+}
+
+#[test]
+fn jointly_planned_vehicles_keep_their_separation_on_the_independent_clock() {
+    let s = crossing();
+    let r =
+        s.plan(&PlanRequest { planner: Some("de".into()), seed: 1, ..PlanRequest::default() }, &mut |_| {}).unwrap();
+    assert!(r.status.is_success(), "{}", r.reason);
+    let fleet = r.fleet.as_ref().unwrap();
+    assert!(fleet.conflicts.is_empty() && fleet.closest.as_ref().unwrap().distance_m >= 150.0, "{fleet:?}");
+    // One pair, every 0.25 s over about 2000 s.
+    assert!(recheck_separation(&s, &r).unwrap() > 7000);
+    recheck_plan(&s, &r).unwrap();
+}
+
+#[test]
+fn the_independent_sampler_sees_the_conflict_the_exact_check_reports() {
+    // A* plans the two vehicles one after another, each alone: they meet at the crossing.
+    let s = crossing();
+    let r = s.plan(&PlanRequest { planner: Some("astar".into()), ..PlanRequest::default() }, &mut |_| {}).unwrap();
+    let fleet = r.fleet.as_ref().unwrap();
+    assert_eq!(fleet.conflicts.len(), 1, "{fleet:?}");
+    assert!(!r.status.is_success());
+    let e = recheck_separation(&s, &r).unwrap_err();
+    assert!(e.contains("auv-east and auv-north"), "{e}");
+}
