@@ -9,6 +9,10 @@ mod graph;
 #[path = "cli/simulate.rs"]
 mod simulate;
 
+// Fleets, likewise.
+#[path = "cli/fleet.rs"]
+mod fleet;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

@@ -71,7 +71,7 @@ fn obstacle() -> impl Strategy<Value = Obstacle> {
         Just(Vec3::ZERO),
         (-0.5..0.5f64, -0.5..0.5f64, -0.1..0.1f64).prop_map(|(a, b, c)| Vec3::new(a, b, c)),
     ];
-    (shape, velocity).prop_map(|(shape, velocity)| Obstacle { shape, velocity })
+    (shape, velocity).prop_map(|(shape, velocity)| Obstacle { shape, velocity, window: None })
 }
 
 fn vortex() -> impl Strategy<Value = LambOseen> {
@@ -186,7 +186,11 @@ fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
                     rng.random_range(-300.0..-100.0),
                 );
                 let v = Vec3::new(rng.random_range(-1.5..1.5), rng.random_range(-1.5..1.5), 0.0);
-                Obstacle { shape: Shape::Sphere { center: c, radius: rng.random_range(10.0..60.0) }, velocity: v }
+                Obstacle {
+                    shape: Shape::Sphere { center: c, radius: rng.random_range(10.0..60.0) },
+                    velocity: v,
+                    window: None,
+                }
             })
             .collect();
         let vortices: Vec<LambOseen> = (0..rng.random_range(0..3))

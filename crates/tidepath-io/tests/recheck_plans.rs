@@ -120,7 +120,11 @@ fn the_rechecker_finds_what_it_is_shown() {
     let k = path.len() / 2;
     let (mid, t_mid) = ((path[k] + path[k + 1]) * 0.5, (times[k] + times[k + 1]) * 0.5);
     let velocity = Vec3::new(0.7, -0.4, 0.0);
-    s.world.obstacles.push(Obstacle { shape: Shape::Sphere { center: mid - velocity * t_mid, radius: 2.0 }, velocity });
+    s.world.obstacles.push(Obstacle {
+        shape: Shape::Sphere { center: mid - velocity * t_mid, radius: 2.0 },
+        velocity,
+        window: None,
+    });
     let e = common::recheck_path(&s.world, &s.missions[0].vehicle, &s.settings, &path, &times).unwrap_err();
     assert!(e.contains(&format!("obstacle {}", s.world.obstacles.len() - 1)), "{e}");
     s.world.obstacles.pop();
@@ -161,7 +165,11 @@ fn the_flown_rechecker_finds_what_it_is_shown() {
     );
     let velocity = Vec3::new(-0.5, 0.2, 0.0);
     let mut w2 = world.clone();
-    w2.obstacles.push(Obstacle { shape: Shape::Sphere { center: mid - velocity * times[1], radius: 1.0 }, velocity });
+    w2.obstacles.push(Obstacle {
+        shape: Shape::Sphere { center: mid - velocity * times[1], radius: 1.0 },
+        velocity,
+        window: None,
+    });
     let e = common::flown::recheck_flown(&w2, &vehicle, &settings, &path, &times, 40.0).unwrap_err();
     assert!(e.contains("obstacle 0"), "{e}");
     // A corner whose legs allow only 30 m.

@@ -38,6 +38,7 @@ fn world() -> World {
         Obstacle {
             shape: Shape::Circle { center: Vec2::new(6_000.0, 4_500.0), radius: 200.0 },
             velocity: Vec3::new(0.0, -0.25, 0.0),
+            window: None,
         },
     ];
     w.current = Current::Uniform(Vec3::new(0.3, 0.0, 0.0));

@@ -30,6 +30,7 @@ fn rich_world() -> World {
         Obstacle {
             shape: Shape::Sphere { center: Vec3::new(8_000.0, 9_000.0, -400.0), radius: 600.0 },
             velocity: Vec3::new(0.4, -0.2, 0.0),
+            window: None,
         },
         Obstacle::fixed(Shape::Box {
             min: Vec3::new(12_500.0, 6_000.0, -800.0),
@@ -210,10 +211,12 @@ fn tall_grid_world_with_many_planners_and_moving_obstacles() {
         Obstacle {
             shape: Shape::Sphere { center: Vec3::new(1_500.0, 3_000.0, -150.0), radius: 200.0 },
             velocity: Vec3::new(-0.3, 0.0, 0.0),
+            window: None,
         },
         Obstacle {
             shape: Shape::Circle { center: Vec2::new(800.0, 4_500.0), radius: 150.0 },
             velocity: Vec3::new(0.0, 0.5, 0.0),
+            window: None,
         },
     ];
     world.current = Current::Uniform(Vec3::new(0.0, 0.2, 0.0));

@@ -37,7 +37,7 @@ fn world(current: Current) -> World {
             _ => Shape::Circle { center: Vec2::new(c.x, c.y), radius: 150.0 },
         };
         let velocity = if k % 5 == 0 { Vec3::new(0.05, -0.05, 0.0) } else { Vec3::ZERO };
-        obstacles.push(Obstacle { shape, velocity });
+        obstacles.push(Obstacle { shape, velocity, window: None });
     }
     let bounds = Aabb::new(Vec3::new(0.0, 0.0, -1000.0), Vec3::new(19900.0, 11940.0, 0.0));
     World { bounds, dims: tidepath::world::Dims::Three, terrain, obstacles, current, frame: None }

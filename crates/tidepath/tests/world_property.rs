@@ -107,7 +107,7 @@ impl ObstacleSpec {
             ShapeSpec::Box { min, max } => Shape::Box { min: v3(min), max: v3(max) },
             ShapeSpec::Circle { c, r } => Shape::Circle { center: Vec2::new(c[0], c[1]), radius: r },
         };
-        Obstacle { shape, velocity: v3(self.velocity) }
+        Obstacle { shape, velocity: v3(self.velocity), window: None }
     }
 
     /// Signed distance from point `p` at time `t` to the obstacle: negative inside (minus the

@@ -56,6 +56,26 @@ pub struct PlanArgs {
     /// drawn whenever --graph is given with --plot).
     #[arg(long)]
     pub plot_graph: bool,
+    /// How a fleet is planned: `planner` (as the planner does: optimizers jointly, the others
+    /// one after another, each alone) or `sequential` (one after another, each around the
+    /// vehicles planned before it as moving obstacles, keeping `[fleet] separation_m`).
+    #[arg(long, value_enum, default_value = "planner")]
+    pub fleet: FleetArg,
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum FleetArg {
+    Planner,
+    Sequential,
+}
+
+impl FleetArg {
+    pub fn mode(self) -> tidepath::planner::FleetMode {
+        match self {
+            FleetArg::Planner => tidepath::planner::FleetMode::AsPlanner,
+            FleetArg::Sequential => tidepath::planner::FleetMode::Sequential,
+        }
+    }
 }
 
 pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
@@ -112,6 +132,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         init,
         stop: Some(crate::stop_flag()),
         record_graph: args.graph.is_some() || args.plot_graph,
+        fleet: args.fleet.mode(),
     };
     scenario.check_request(&req).map_err(|e| match &e {
         // Only --plot-graph asked for the graph: the refusal names it.
@@ -211,6 +232,15 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
         scenario,
     );
     fig.focus = report.missions.iter().filter_map(|m| m.focus.clone()).collect();
+    // A fleet's closest approach, marked between the two vehicles.
+    if let Some(c) = report.fleet.as_ref().and_then(|f| f.closest.as_ref()) {
+        let at = tidepath::Vec3::from_array(c.positions[0]).lerp(tidepath::Vec3::from_array(c.positions[1]), 0.5);
+        let label = format!(
+            "closest approach: {} and {}, {:.0} m apart at t = {:.0} s",
+            c.vehicles[0], c.vehicles[1], c.distance_m, c.time_s
+        );
+        fig.focus.push(tidepath::planner::Focus { at, label });
+    }
     fig.paths = owned
         .iter()
         .map(|(label, pts, m, flown)| {

@@ -90,7 +90,7 @@ fn every_kind_parses_into_its_change() {
             "kind = \"add-obstacle\"\nadd = { kind = \"cylinder\", center = [4000.0, 2000.0], radius = 150.0, z_min = -300.0, z_max = -50.0, velocity = [0.0, 1.5, 0.0] }",
             ChangeKind::AddObstacle(Obstacle {
                 shape: Shape::Cylinder { center: Vec2::new(4000.0, 2000.0), radius: 150.0, z_min: -300.0, z_max: -50.0 },
-                velocity: Vec3::new(0.0, 1.5, 0.0),
+                velocity: Vec3::new(0.0, 1.5, 0.0), window: None
             }),
         ),
         ("kind = \"remove-obstacle\"\nobstacle = 2", ChangeKind::RemoveObstacle { index: 2 }),

@@ -69,3 +69,41 @@ pub fn build_fleet(spec: Option<&FleetSpec>, missions: &[Mission], warnings: &mu
     }
     Ok(rules)
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::scenario::Scenario;
+
+    fn with_fleet(fleet: &str) -> Result<Scenario, String> {
+        let text = crate::scenario::builtin("fleet-crossing")
+            .unwrap()
+            .replace("[fleet]\nseparation_m = 150.0", &format!("[fleet]\n{fleet}"));
+        Scenario::from_toml(&text, "fleet.toml").map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn pairs_are_named_by_mission_and_every_value_is_checked() {
+        let s = with_fleet("separation_m = 100.0\npresence = \"leaves\"\npairs = [{ vehicles = [\"auv-north\", \"auv-east\"], separation_m = 40.0 }]").unwrap();
+        assert_eq!(s.fleet.separation(0, 1), 40.0);
+        assert_eq!(s.fleet.presence, tidepath::fleet::Presence::Leaves);
+        let e =
+            with_fleet("separation_m = 1.0\npairs = [{ vehicles = [\"auv-east\", \"glider\"], separation_m = 1.0 }]")
+                .unwrap_err();
+        assert!(e.contains("fleet.pairs[0].vehicles") && e.contains("'glider'"), "{e}");
+        let e = with_fleet("separation_m = -1.0").unwrap_err();
+        assert!(e.contains("fleet.separation_m"), "{e}");
+        let e = with_fleet("separation_m = 1.0\npresence = \"floats\"").unwrap_err();
+        assert!(e.contains("fleet.presence"), "{e}");
+        let e =
+            with_fleet("separation_m = 1.0\npairs = [{ vehicles = [\"auv-east\", \"auv-east\"], separation_m = 1.0 }]")
+                .unwrap_err();
+        assert!(e.contains("fleet.pairs[0]"), "{e}");
+    }
+
+    #[test]
+    fn a_scenario_without_a_fleet_section_checks_no_separation() {
+        let s = crate::scenario::load("demo").unwrap();
+        assert!(!s.fleet.active(s.missions.len()));
+        assert!(!crate::scenario::builtin("demo").unwrap().contains("[fleet]"));
+    }
+}

@@ -68,6 +68,8 @@ pub struct PlanRequest {
     pub stop: Option<Arc<AtomicBool>>,
     /// Keep the planner's search graph (tree or roadmap) in the report (`plan --graph`).
     pub record_graph: bool,
+    /// How a fleet is planned (`plan --fleet sequential`).
+    pub fleet: tidepath::planner::FleetMode,
 }
 
 /// The component tables a plan draws on: the built-in planners and smoothers by default; a
@@ -240,7 +242,22 @@ impl Scenario {
     pub fn check_request_in(&self, c: &Components, req: &PlanRequest) -> Result<()> {
         let prepared = self.prepare(c, req)?;
         let problem = self.problem(prepared.cost.as_ref());
-        prepared.planner.check(&problem)
+        prepared.planner.check(&problem)?;
+        if req.fleet == tidepath::planner::FleetMode::Sequential && self.missions.len() > 1 {
+            // Planned one after another, each vehicle meets the earlier ones as obstacles that
+            // move (and exist only while they fly a leg): the planner must take such a world.
+            let mut world = self.world.clone();
+            let shape = tidepath::world::Shape::Sphere { center: world.bounds.min, radius: 1e-3 };
+            world.obstacles.push(tidepath::world::Obstacle { shape, velocity: Vec3::ZERO, window: Some((0.0, 0.0)) });
+            let probe = tidepath::planner::Problem { world: &world, ..problem };
+            prepared.planner.check(&probe).map_err(|e| {
+                Error::input(
+                    "--fleet",
+                    format!("sequential: the vehicles planned first are moving obstacles for the next, and {e}"),
+                )
+            })?;
+        }
+        Ok(())
     }
 
     /// Everything a run needs, built and checked.
@@ -299,6 +316,7 @@ impl Scenario {
         let options = SolveOptions {
             run: RunOptions { init: req.init.as_deref(), parallel: req.parallel, record_graph: req.record_graph },
             smoother: smoother.as_deref(),
+            fleet: req.fleet,
         };
         let mut rng = run_rng(req.seed, req.run);
         let plan = planner::solve(planner.as_mut(), &problem, &termination, &mut rng, options, observer)?;

@@ -174,7 +174,7 @@ pub(super) fn build_obstacle(at: &str, spec: &ObstacleSpec) -> Result<Obstacle> 
             format!("must be at most {MAX_SPEED} m/s, got {:?}", spec.velocity),
         ));
     }
-    Ok(Obstacle { shape, velocity })
+    Ok(Obstacle { shape, velocity, window: None })
 }
 
 fn kind_id(k: ObstacleKind) -> &'static str {

@@ -52,3 +52,37 @@ fn the_independent_sampler_sees_the_conflict_the_exact_check_reports() {
     let e = recheck_separation(&s, &r).unwrap_err();
     assert!(e.contains("auv-east and auv-north"), "{e}");
 }
+
+#[test]
+fn every_planner_planning_one_after_another_keeps_the_separation() {
+    use tidepath::planner::{FleetMode, Unit, PLANNERS};
+    let s = crossing();
+    let mut feasible = Vec::new();
+    for e in PLANNERS {
+        let caps = e.build.caps;
+        let req = PlanRequest {
+            planner: Some(e.id.into()),
+            seed: 2,
+            fleet: FleetMode::Sequential,
+            iterations: caps.counts_unit(Unit::Iterations).then_some(60),
+            samples: caps.counts_unit(Unit::Samples).then_some(1500),
+            ..PlanRequest::default()
+        };
+        if let Err(err) = s.check_request(&req) {
+            // A planner that cannot take moving obstacles is refused before planning, in one
+            // line naming --fleet.
+            let err = err.to_string();
+            assert!(err.starts_with("--fleet: ") && !err.contains('\n'), "{}: {err}", e.id);
+            continue;
+        }
+        let r = s.plan(&req, &mut |_| {}).unwrap();
+        if r.status.is_success() {
+            recheck_plan(&s, &r).unwrap_or_else(|x| panic!("{}: {x}", e.id));
+            assert!(recheck_separation(&s, &r).unwrap() > 0);
+            feasible.push(e.id);
+        }
+    }
+    for id in ["astar", "theta-star", "hybrid", "rrt-star", "hybrid-astar"] {
+        assert!(feasible.contains(&id), "{id} not feasible: {feasible:?}");
+    }
+}

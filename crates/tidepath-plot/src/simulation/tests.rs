@@ -81,11 +81,12 @@ fn simulate(case: Case) -> Sim {
     let circle = |x: f64, y: f64, r: f64| Shape::Circle { center: Vec2::new(x * s, y * s), radius: r * s };
     base.obstacles = vec![
         Obstacle::fixed(circle(2000.0, 2300.0, 300.0)),
-        Obstacle { shape: circle(1200.0, 200.0, 200.0), velocity: Vec3::new(0.0, 0.9 * s, 0.0) },
-        Obstacle { shape: circle(3100.0, 2900.0, 220.0), velocity: Vec3::new(-0.3 * s, -0.8 * s, 0.0) },
+        Obstacle { shape: circle(1200.0, 200.0, 200.0), velocity: Vec3::new(0.0, 0.9 * s, 0.0), window: None },
+        Obstacle { shape: circle(3100.0, 2900.0, 220.0), velocity: Vec3::new(-0.3 * s, -0.8 * s, 0.0), window: None },
     ];
     base.current = Current::Uniform(Vec3::new(0.2, 0.1, 0.0));
-    let ship = Obstacle { shape: circle(3600.0, 300.0, 150.0), velocity: Vec3::new(-1.2 * s, 1.0 * s, 0.0) };
+    let ship =
+        Obstacle { shape: circle(3600.0, 300.0, 150.0), velocity: Vec3::new(-1.2 * s, 1.0 * s, 0.0), window: None };
 
     let (start, goal) = (v3(200.0, 1500.0), v3(3800.0, 1500.0));
     let mut route = vec![start, v3(1400.0, 1300.0), v3(2600.0, 1500.0), goal];

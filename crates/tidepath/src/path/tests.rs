@@ -129,6 +129,7 @@ fn moving_obstacle_is_met_at_the_right_time() {
     w.obstacles.push(Obstacle {
         shape: Shape::Sphere { center: Vec3::new(50.0, 30.0, -50.0), radius: 3.0 },
         velocity: Vec3::new(0.0, -1.0, 0.0),
+        window: None,
     });
     let p = [Vec3::new(10.0, 10.0, -50.0), Vec3::new(90.0, 10.0, -50.0)];
     assert_eq!(metrics_of(&w, &p).0.collisions, 1);

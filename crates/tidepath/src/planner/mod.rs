@@ -9,6 +9,7 @@
 
 pub mod capabilities;
 mod fleet_judge;
+pub mod fleet_sequential;
 pub mod grid_search;
 pub mod hybrid;
 pub mod hybrid_astar;
@@ -21,6 +22,7 @@ pub mod sampling;
 mod sliced_hint;
 pub mod solve;
 pub use fleet_judge::judge_fleet;
+pub use fleet_sequential::FleetMode;
 mod status;
 pub mod visibility;
 

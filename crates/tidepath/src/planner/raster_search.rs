@@ -65,7 +65,7 @@ pub fn time_invariant(world: &World) -> bool {
         Current::Grid(g) => g.is_steady(),
         _ => false,
     };
-    steady && world.obstacles.iter().all(|o| o.velocity == Vec3::ZERO)
+    steady && world.obstacles.iter().all(|o| o.is_fixed())
 }
 
 /// One mission's raster, priced and ready to search.

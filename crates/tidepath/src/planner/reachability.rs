@@ -115,7 +115,7 @@ fn check_inner(problem: &Problem<'_>, i: usize, termination: &Termination, pinch
     }
     // Fixed obstacles block the cells they fill over the whole usable water column; only the
     // cells under an obstacle's box are tested.
-    for o in world.obstacles.iter().filter(|o| o.velocity == Vec3::ZERO) {
+    for o in world.obstacles.iter().filter(|o| o.is_fixed()) {
         let bb = o.shape.aabb();
         let cells = |lo: f64, hi: f64, o: f64, d: f64, n: usize| {
             let a = ((lo - o) / d).floor().max(0.0) as usize;

@@ -18,6 +18,8 @@ pub struct SolveOptions<'a> {
     pub run: RunOptions<'a>,
     /// Every path goes through it before it is judged.
     pub smoother: Option<&'a dyn Smoother>,
+    /// How a fleet is planned (`--fleet sequential`).
+    pub fleet: super::fleet_sequential::FleetMode,
 }
 
 /// One mission's path, judged.
@@ -66,7 +68,7 @@ impl MissionPlan {
         self.smoothed.as_deref().unwrap_or(&self.waypoints)
     }
 
-    fn unplanned(name: &str, status: Status, reason: String) -> Self {
+    pub(super) fn unplanned(name: &str, status: Status, reason: String) -> Self {
         Self {
             status,
             reason,
@@ -161,6 +163,9 @@ pub fn solve(
     options: SolveOptions<'_>,
     observer: &mut dyn FnMut(&Progress),
 ) -> Result<Plan> {
+    if options.fleet == super::fleet_sequential::FleetMode::Sequential && problem.missions.len() > 1 {
+        return super::fleet_sequential::solve_sequential(planner, problem, termination, rng, options, observer);
+    }
     termination.check()?;
     // The run's one clock starts here: every stage below draws on the same deadline.
     let termination = &termination.started_now();
@@ -325,7 +330,7 @@ pub fn solve(
 
 /// The plan's status: the worst of its missions'; the reason is that mission's, named when
 /// there are several.
-fn overall(missions: &[MissionPlan]) -> (Status, String) {
+pub(super) fn overall(missions: &[MissionPlan]) -> (Status, String) {
     let Some(worst) = missions.iter().max_by_key(|m| m.status.severity()) else {
         return (Status::Infeasible, "no mission".into());
     };

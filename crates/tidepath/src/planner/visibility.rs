@@ -58,7 +58,7 @@ pub fn scene(problem: &Problem<'_>, i: usize, inflate: bool) -> Result<(Scene, b
             "visibility needs a world without a seabed that reaches the plane; use theta-star or hybrid",
         ));
     }
-    if w.obstacles.iter().any(|o| o.velocity != Vec3::ZERO) {
+    if w.obstacles.iter().any(|o| !o.is_fixed()) {
         return Err(Error::input(field, "visibility needs fixed obstacles only; use theta-star or hybrid"));
     }
     let grow = if inflate { 1.0 / (ARC_STEP / 2.0).cos() } else { 1.0 };

@@ -162,7 +162,7 @@ impl Raster {
             }
         }
         // Fixed obstacles, each over the cells under its box grown by the safety distance.
-        for o in world.obstacles.iter().filter(|o| o.velocity == Vec3::ZERO) {
+        for o in world.obstacles.iter().filter(|o| o.is_fixed()) {
             let bb = o.shape.aabb();
             let span = |lo: f64, hi: f64, o: f64, d: f64, n: usize| {
                 let a = ((lo - safety - o) / d).floor().max(0.0) as usize;

@@ -15,7 +15,11 @@ fn v(x: f64, y: f64) -> Vec3 {
 /// it is on the route (y = 200) at t = 370 s, when a vehicle at 1.5 m/s from (50, 200) on
 /// the straight route is at x = 605: a straight run hits it.
 fn ship() -> Obstacle {
-    Obstacle { shape: Shape::Circle { center: Vec2::new(600.0, -170.0), radius: 40.0 }, velocity: v(0.0, 1.0) }
+    Obstacle {
+        shape: Shape::Circle { center: Vec2::new(600.0, -170.0), radius: 40.0 },
+        velocity: v(0.0, 1.0),
+        window: None,
+    }
 }
 
 fn run(world: &World, changes: &[Change], params: SimParams) -> Simulation {

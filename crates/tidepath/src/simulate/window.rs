@@ -99,7 +99,8 @@ pub(super) fn replan(
         let init = [route[..=w].to_vec()];
         let run = RunOptions { init: warm.then_some(&init[..]), ..RunOptions::default() };
         let clock = Instant::now();
-        let plan = solve(&mut *planner, &problem, &budget, rng, SolveOptions { run, smoother: None }, &mut |_| {})?;
+        let plan =
+            solve(&mut *planner, &problem, &budget, rng, SolveOptions { run, ..SolveOptions::default() }, &mut |_| {})?;
         let planning_s = clock.elapsed().as_secs_f64();
         let m = &plan.missions[0];
         tried.push(w);

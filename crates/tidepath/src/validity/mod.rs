@@ -181,7 +181,7 @@ impl<'a> Validator<'a> {
         if !(clearance >= safety) {
             return Err(StateIssue::Seabed { clearance });
         }
-        for (index, o) in self.world.obstacles.iter().enumerate().filter(|(_, o)| o.velocity == Vec3::ZERO) {
+        for (index, o) in self.world.obstacles.iter().enumerate().filter(|(_, o)| o.is_fixed()) {
             if o.contains(p, 0.0, safety) {
                 return Err(StateIssue::Obstacle { index, inside: o.contains(p, 0.0, 0.0) });
             }
@@ -411,7 +411,7 @@ impl<'a> Validator<'a> {
     pub fn motion_clearance(&self, a: Vec3, b: Vec3, t0: f64) -> f64 {
         let world = self.world;
         let mut best = world.segment_terrain_clearance(a, b);
-        for o in world.obstacles.iter().filter(|o| o.velocity == Vec3::ZERO) {
+        for o in world.obstacles.iter().filter(|o| o.is_fixed()) {
             best = best.min(o.segment_clearance(a, b, t0, t0));
         }
         if self.obstacles.moving().is_empty() {

@@ -38,8 +38,8 @@ pub(crate) struct ObstacleIndex {
 impl ObstacleIndex {
     pub(crate) fn new(world: &World, margin: f64) -> Self {
         let n = world.obstacles.len();
-        let fixed: Vec<usize> = (0..n).filter(|&k| world.obstacles[k].velocity == Vec3::ZERO).collect();
-        let moving: Vec<u32> = (0..n as u32).filter(|&k| world.obstacles[k as usize].velocity != Vec3::ZERO).collect();
+        let fixed: Vec<usize> = (0..n).filter(|&k| world.obstacles[k].is_fixed()).collect();
+        let moving: Vec<u32> = (0..n as u32).filter(|&k| !world.obstacles[k as usize].is_fixed()).collect();
         let moving_boxes = moving
             .iter()
             .map(|&k| {
@@ -182,7 +182,7 @@ mod tests {
                     _ => Shape::Cylinder { center: Vec2::new(c.x, c.y), radius: r, z_min: -80.0, z_max: -20.0 },
                 };
                 let velocity = if k % 7 == 3 { Vec3::new(0.5, -0.2, 0.0) } else { Vec3::ZERO };
-                w.obstacles.push(Obstacle { shape, velocity });
+                w.obstacles.push(Obstacle { shape, velocity, window: None });
             }
             let margin = rng.random_range(0.0..20.0);
             let index = ObstacleIndex::new(&w, margin);
@@ -204,7 +204,7 @@ mod tests {
                 unique.dedup();
                 assert_eq!(unique.len(), seen.len(), "a candidate was offered twice");
                 for (k, o) in w.obstacles.iter().enumerate() {
-                    if o.velocity != Vec3::ZERO {
+                    if !o.is_fixed() {
                         assert!(!seen.contains(&k) && index.moving().contains(&(k as u32)));
                     } else if o.segment_hits(a, b, ta, tb, margin) {
                         assert!(seen.contains(&k), "obstacle {k} hit but skipped by the index");

@@ -27,6 +27,7 @@ fn state_issues_name_what_is_wrong() {
     w.obstacles.push(Obstacle {
         shape: Shape::Sphere { center: Vec3::new(0.0, 300.0, -50.0), radius: 10.0 },
         velocity: Vec3::new(1.0, 0.0, 0.0),
+        window: None,
     });
     let (v, s) = (vehicle(), ModelSettings::default());
     let val = Validator::new(&w, &v, &s);
@@ -130,8 +131,11 @@ fn moving_obstacle_met_at_the_vehicle_clock(step: f64) {
     // A small sphere crossing the track (moving in y) so that it is at the vehicle at t_meet.
     let speed = 5.0;
     let centre0 = Vec3::new(where_it_is.x, -speed * t_meet, -50.0);
-    w.obstacles
-        .push(Obstacle { shape: Shape::Sphere { center: centre0, radius: 3.0 }, velocity: Vec3::new(0.0, speed, 0.0) });
+    w.obstacles.push(Obstacle {
+        shape: Shape::Sphere { center: centre0, radius: 3.0 },
+        velocity: Vec3::new(0.0, speed, 0.0),
+        window: None,
+    });
     let val = Validator::new(&w, &v, &s);
     let m = val.motion(a, b, 0.0);
     assert_eq!((m.first, m.collisions), (Some(MotionIssue::Obstacle(0)), 1), "step {step}");
@@ -150,7 +154,11 @@ fn moving_obstacle_met_at_the_vehicle_clock(step: f64) {
 /// x covers x in [-1 + t0, 1 + t1] over [t0, t1].
 #[test]
 fn moving_obstacle_box_test_covers_its_sweep() {
-    let o = Obstacle { shape: Shape::Box { min: Vec3::splat(-1.0), max: Vec3::splat(1.0) }, velocity: Vec3::X };
+    let o = Obstacle {
+        shape: Shape::Box { min: Vec3::splat(-1.0), max: Vec3::splat(1.0) },
+        velocity: Vec3::X,
+        window: None,
+    };
     let probe = |x: f64| (Vec3::new(x, -0.5, -0.5), Vec3::new(x + 0.1, 0.5, 0.5));
     let (lo, hi) = probe(5.5);
     assert!(o.may_come_within(lo, hi, 0.0, 5.0)); // reaches x = 6

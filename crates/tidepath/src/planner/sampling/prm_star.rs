@@ -166,7 +166,7 @@ impl Planner for PrmStar {
         // What does not move, for checking roadmap edges before their time is known.
         let fixed: Option<World> = (!super::time_invariant(problem.world)).then(|| {
             let mut w = problem.world.clone();
-            w.obstacles.retain(|o| o.velocity == Vec3::ZERO);
+            w.obstacles.retain(|o| o.is_fixed());
             w
         });
         let default = self.params.samples as u64;

@@ -189,6 +189,7 @@ fn rewiring_retimes_the_subtree_and_refuses_what_the_clock_makes_invalid() {
     w.obstacles.push(Obstacle {
         shape: Shape::Circle { center: crate::geom::Vec2::new(1000.0, 0.0), radius: 20.0 },
         velocity: Vec3::new(0.0, 1.0, 0.0),
+        window: None,
     });
     let m = Mission::new("m", vehicle(), Vec3::new(0.0, 500.0, 0.0), Vec3::new(1900.0, 500.0, 0.0), 0.0);
     let settings = ModelSettings::default();

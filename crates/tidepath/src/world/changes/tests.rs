@@ -12,7 +12,11 @@ fn world() -> World {
         dims: Dims::Two,
         terrain: Terrain::None,
         obstacles: vec![
-            Obstacle { shape: Shape::Circle { center: Vec2::ZERO, radius: 10.0 }, velocity: Vec3::new(1.0, 0.0, 0.0) },
+            Obstacle {
+                shape: Shape::Circle { center: Vec2::ZERO, radius: 10.0 },
+                velocity: Vec3::new(1.0, 0.0, 0.0),
+                window: None,
+            },
             Obstacle::fixed(Shape::Circle { center: Vec2::new(500.0, 500.0), radius: 50.0 }),
         ],
         current: Current::Vortices(vec![LambOseen { x: 100.0, y: 100.0, strength: 2.0, core_radius: 50.0 }]),

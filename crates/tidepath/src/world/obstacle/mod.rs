@@ -51,11 +51,47 @@ pub struct Obstacle {
     pub shape: Shape,
     /// Constant velocity in m/s; the shape at time t is translated by velocity * t.
     pub velocity: Vec3,
+    /// The closed time interval the obstacle exists in (`None`: always). A vehicle of a fleet
+    /// planned earlier is a chain of such obstacles, one per leg of its timed path.
+    pub window: Option<(f64, f64)>,
 }
 
 impl Obstacle {
     pub fn fixed(shape: Shape) -> Self {
-        Self { shape, velocity: Vec3::ZERO }
+        Self { shape, velocity: Vec3::ZERO, window: None }
+    }
+
+    /// An obstacle moving at `velocity` from its place `shape` at time 0, at all times.
+    pub fn moving(shape: Shape, velocity: Vec3) -> Self {
+        Self { shape, velocity, window: None }
+    }
+
+    /// Whether it stays where it is for all time (what the rasters, the reachability check
+    /// and the visibility graph take as terrain).
+    #[inline]
+    pub fn is_fixed(&self) -> bool {
+        self.velocity == Vec3::ZERO && self.window.is_none()
+    }
+
+    /// The part of the motion a -> b (from `ta` to `tb`) inside the obstacle's window, or
+    /// `None` when they do not overlap in time. Undefined times keep the whole motion (the
+    /// exact tests treat them as hits).
+    #[inline]
+    fn clip(&self, a: Vec3, b: Vec3, ta: f64, tb: f64) -> Option<(Vec3, Vec3, f64, f64)> {
+        let Some((w0, w1)) = self.window else { return Some((a, b, ta, tb)) };
+        if !(ta.is_finite() && tb.is_finite()) {
+            return Some((a, b, ta, tb));
+        }
+        let (lo, hi) = (ta.max(w0), tb.min(w1));
+        if lo > hi {
+            return None;
+        }
+        if tb > ta {
+            let f = |t: f64| a + (b - a) * ((t - ta) / (tb - ta));
+            Some((if lo > ta { f(lo) } else { a }, if hi < tb { f(hi) } else { b }, lo, hi))
+        } else {
+            Some((a, b, ta, tb))
+        }
     }
 
     /// The shape translated to time `t`. A moving obstacle at a non-finite time has no place,
@@ -73,6 +109,11 @@ impl Obstacle {
     /// A moving obstacle at a non-finite time could be anywhere, so the answer is `true`.
     #[inline]
     pub fn contains(&self, p: Vec3, t: f64, margin: f64) -> bool {
+        if let Some((w0, w1)) = self.window {
+            if t.is_finite() && !(w0 <= t && t <= w1) {
+                return false;
+            }
+        }
         let p = if self.velocity == Vec3::ZERO {
             p
         } else if t.is_finite() {
@@ -89,6 +130,15 @@ impl Obstacle {
     /// conservative: `false` proves it stays clear).
     #[inline]
     pub fn may_come_within(&self, lo: Vec3, hi: Vec3, t0: f64, t1: f64) -> bool {
+        let (t0, t1) = match self.window {
+            Some((w0, w1)) if t0.is_finite() && t1.is_finite() => {
+                if t0.max(w0) > t1.min(w1) {
+                    return false;
+                }
+                (t0.max(w0), t1.min(w1))
+            }
+            _ => (t0, t1),
+        };
         let (min, max) = self.shape.bounds();
         swept_box_meets(min, max, self.velocity, lo, hi, t0, t1)
     }
@@ -102,6 +152,7 @@ impl Obstacle {
     /// (checking for NaN up front would cost every call in the hot loop).
     #[inline]
     pub fn segment_hits(&self, a: Vec3, b: Vec3, ta: f64, tb: f64, margin: f64) -> bool {
+        let Some((a, b, ta, tb)) = self.clip(a, b, ta, tb) else { return false };
         match self.relative_segment(a, b, ta, tb) {
             Some((a, b)) => self.shape.segment_hits(a, b, margin),
             None => true,
@@ -116,6 +167,7 @@ impl Obstacle {
         if !(a.is_finite() && b.is_finite()) {
             return 0.0;
         }
+        let Some((a, b, ta, tb)) = self.clip(a, b, ta, tb) else { return f64::INFINITY };
         match self.relative_segment(a, b, ta, tb) {
             Some((a, b)) => self.shape.segment_distance(a, b),
             None => 0.0,

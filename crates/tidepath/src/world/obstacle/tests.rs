@@ -131,7 +131,7 @@ fn moving_sphere_changes_the_answer() {
     let (a, b) = (v(-10.0, 0.0, -10.0), v(10.0, 0.0, -10.0));
     assert!(Obstacle::fixed(shape.clone()).segment_hits(a, b, 0.0, 10.0, 0.0));
     // Moving north at 1 m/s: at t = 5 (when we pass x = 0) it is at y = 5, 4 m clear.
-    let moving = Obstacle { shape: shape.clone(), velocity: v(0.0, 1.0, 0.0) };
+    let moving = Obstacle { shape: shape.clone(), velocity: v(0.0, 1.0, 0.0), window: None };
     assert!(!moving.segment_hits(a, b, 0.0, 10.0, 0.0));
     // In the sphere's frame the segment runs from (-10, 0) to (10, -10).
     let c = moving.segment_clearance(a, b, 0.0, 10.0);
@@ -140,8 +140,11 @@ fn moving_sphere_changes_the_answer() {
     assert!(close(c, 20f64.sqrt() - 1.0), "{c}");
     // And vice versa: a sphere starting 5 m south and moving north crosses our path just
     // as we get there.
-    let incoming =
-        Obstacle { shape: Shape::Sphere { center: v(0.0, -5.0, -10.0), radius: 1.0 }, velocity: v(0.0, 1.0, 0.0) };
+    let incoming = Obstacle {
+        shape: Shape::Sphere { center: v(0.0, -5.0, -10.0), radius: 1.0 },
+        velocity: v(0.0, 1.0, 0.0),
+        window: None,
+    };
     assert!(!Obstacle::fixed(incoming.shape.clone()).segment_hits(a, b, 0.0, 10.0, 0.0));
     assert!(incoming.segment_hits(a, b, 0.0, 10.0, 0.0));
     assert_eq!(incoming.segment_clearance(a, b, 0.0, 10.0), 0.0);
@@ -156,7 +159,7 @@ fn non_finite_times_are_conservative_for_moving_obstacles_only() {
     let (a, b) = (v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0));
     let fixed = Obstacle::fixed(shape.clone());
     assert!(!fixed.segment_hits(a, b, 0.0, f64::INFINITY, 0.0));
-    let moving = Obstacle { shape, velocity: v(0.0, 0.0, 1.0) };
+    let moving = Obstacle { shape, velocity: v(0.0, 0.0, 1.0), window: None };
     assert!(moving.segment_hits(a, b, 0.0, f64::INFINITY, 0.0));
     assert_eq!(moving.segment_clearance(a, b, f64::NAN, 1.0), 0.0);
     assert!(moving.contains(a, f64::INFINITY, 0.0));
@@ -171,11 +174,43 @@ fn translated_cylinder_and_circle() {
     let o = Obstacle {
         shape: Shape::Cylinder { center: Vec2::ZERO, radius: 1.0, z_min: -5.0, z_max: f64::INFINITY },
         velocity: v(1.0, 0.0, -1.0),
+        window: None,
     };
     assert_eq!(
         o.shape_at(2.0),
         Shape::Cylinder { center: Vec2::new(2.0, 0.0), radius: 1.0, z_min: -7.0, z_max: f64::INFINITY }
     );
-    let c = Obstacle { shape: Shape::Circle { center: Vec2::ZERO, radius: 1.0 }, velocity: v(0.0, 2.0, 5.0) };
+    let c =
+        Obstacle { shape: Shape::Circle { center: Vec2::ZERO, radius: 1.0 }, velocity: v(0.0, 2.0, 5.0), window: None };
     assert_eq!(c.shape_at(1.0), Shape::Circle { center: Vec2::new(0.0, 2.0), radius: 1.0 });
+}
+
+#[test]
+fn an_obstacle_with_a_time_window_exists_only_inside_it() {
+    // A disc of radius 10 at (50, 0), moving east at 1 m/s, present for t in [100, 200]:
+    // at t = 100 it is at (150, 0).
+    let o = Obstacle {
+        shape: Shape::Circle { center: Vec2::new(50.0, 0.0), radius: 10.0 },
+        velocity: Vec3::new(1.0, 0.0, 0.0),
+        window: Some((100.0, 200.0)),
+    };
+    assert!(!o.is_fixed());
+    let at = |x: f64| Vec3::new(x, 0.0, 0.0);
+    assert!(o.contains(at(150.0), 100.0, 0.0) && !o.contains(at(150.0), 99.0, 0.0));
+    assert!(!o.contains(at(260.0), 210.0, 0.0), "gone after its window");
+    // A vehicle crossing x = 150 north to south at t = 50..150: it passes (150, 0) at
+    // t = 100, when the disc is there: a hit.
+    let (a, b) = (Vec3::new(150.0, 50.0, 0.0), Vec3::new(150.0, -50.0, 0.0));
+    assert!(o.segment_hits(a, b, 50.0, 150.0, 0.0));
+    // The same crossing at t = 0..100 passes (150, 0) at t = 50, before the window: the
+    // disc, were it there, would be at (100, 0); clipped to [100, 100] the vehicle is at
+    // (150, -50): clear.
+    assert!(!o.segment_hits(a, b, 0.0, 100.0, 0.0));
+    assert!(o.segment_clearance(a, b, 0.0, 100.0) > 30.0);
+    // Entirely before or after the window: nothing to meet.
+    assert!(!o.segment_hits(at(0.0), at(300.0), 0.0, 99.0, 1e9));
+    assert_eq!(o.segment_clearance(at(0.0), at(300.0), 201.0, 300.0), f64::INFINITY);
+    assert!(!o.may_come_within(at(-1e6), at(1e6), 0.0, 99.0));
+    // A fixed obstacle is one without velocity or window.
+    assert!(Obstacle::fixed(Shape::Circle { center: Vec2::ZERO, radius: 1.0 }).is_fixed());
 }
