@@ -178,6 +178,24 @@ pub struct FleetReport {
     pub closest: Option<ApproachReport>,
     /// Pairs closer than their separation.
     pub conflicts: Vec<ApproachReport>,
+    /// The arrivals: spread, first and last, and whether the fleet's rule holds.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub arrival: Option<ArrivalReport>,
+}
+
+/// A fleet's arrivals.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ArrivalReport {
+    /// "free", "together within 60 s" or "order auv-a, auv-b, auv-c".
+    pub rule: String,
+    /// Last arrival minus first (s).
+    pub spread_s: f64,
+    pub first: String,
+    pub first_s: f64,
+    pub last: String,
+    pub last_s: f64,
+    /// Whether the arrivals keep the rule.
+    pub kept: bool,
 }
 
 /// Two vehicles at their closest.
@@ -202,9 +220,25 @@ impl FleetReport {
             positions: [x.at_a.to_array(), x.at_b.to_array()],
             separation_m: rules.separation(a, b),
         };
+        let rule = match &rules.arrival {
+            tidepath::fleet::Arrival::Free => "free".to_string(),
+            tidepath::fleet::Arrival::Together { tolerance_s } => format!("together within {tolerance_s} s"),
+            tidepath::fleet::Arrival::Order(o) => {
+                format!("order {}", o.iter().map(|&i| names[i].as_str()).collect::<Vec<_>>().join(", "))
+            }
+        };
         Self {
             closest: check.closest.as_ref().map(|(a, b, x)| approach(*a, *b, x)),
             conflicts: check.conflicts.iter().map(|c| approach(c.a, c.b, &c.approach)).collect(),
+            arrival: check.arrival.as_ref().map(|a| ArrivalReport {
+                rule,
+                spread_s: a.spread_s,
+                first: names[a.first.0].clone(),
+                first_s: a.first.1,
+                last: names[a.last.0].clone(),
+                last_s: a.last.1,
+                kept: a.broken.is_none(),
+            }),
         }
     }
 
@@ -218,9 +252,20 @@ impl FleetReport {
             ),
             None => "no two vehicles in the water at once".to_string(),
         };
-        match self.conflicts.len() {
+        let separation = match self.conflicts.len() {
             0 => format!("{closest}; separation kept"),
             n => format!("{closest}; {n} pair(s) closer than their separation"),
+        };
+        match &self.arrival {
+            Some(a) => format!(
+                "{separation}; arrivals spread over {:.1} s ({} first, {} last), {}: {}",
+                a.spread_s,
+                a.first,
+                a.last,
+                a.rule,
+                if a.kept { "kept" } else { "broken" }
+            ),
+            None => separation,
         }
     }
 }

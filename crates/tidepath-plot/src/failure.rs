@@ -33,6 +33,7 @@ pub fn short_name(kind: ViolationKind) -> &'static str {
         ViolationKind::Turn => "turn",
         ViolationKind::Endpoint => "misses start or goal",
         ViolationKind::Separation => "too close to another vehicle",
+        ViolationKind::Arrival => "fleet arrival",
     }
 }
 

@@ -161,8 +161,9 @@ pub fn recheck_plan(s: &Scenario, r: &PlanReport) -> Result<usize, String> {
         samples +=
             checked.map_err(|e| format!("{} / {} seed {} mission {}: {e}", s.name, r.planner, r.seed, m.name))?;
     }
-    if r.missions.iter().all(|m| m.feasible) {
+    if r.missions.iter().all(|m| m.feasible) && s.fleet.active(r.missions.len()) {
         samples += recheck_separation(s, r)?;
+        recheck_arrivals(s, r)?;
     }
     Ok(samples)
 }
@@ -227,6 +228,45 @@ pub fn recheck_separation(s: &Scenario, r: &PlanReport) -> Result<usize, String>
         }
     }
     Ok(samples)
+}
+
+/// Re-checks a fleet's arrival rule on the re-checker's own clock: each vehicle's arrival is
+/// the end of its last piece (the flown curve's, with a turning radius).
+pub fn recheck_arrivals(s: &Scenario, r: &PlanReport) -> Result<(), String> {
+    use tidepath::fleet::Arrival;
+    let mut arrivals = Vec::new();
+    for (m, mission) in r.missions.iter().zip(&s.missions) {
+        let (pts, times): (Vec<Vec3>, Vec<f64>) = match &m.flown {
+            Some(f) => (f.vectors(), f.times.clone()),
+            None => (m.points(), m.times.clone()),
+        };
+        let mut t = times.first().copied().ok_or_else(|| format!("mission {}: no times", m.name))?;
+        for (w, &t0) in pts.windows(2).zip(&times) {
+            let p = clock(&s.world, &s.settings, mission.vehicle.speed, w[0], w[1], t0)
+                .ok_or_else(|| format!("mission {}: the current blocks the vehicle", m.name))?;
+            t = p.last().map_or(t0, |x| x.3);
+        }
+        arrivals.push(t);
+    }
+    let spread = arrivals.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+        - arrivals.iter().cloned().fold(f64::INFINITY, f64::min);
+    match &s.fleet.arrival {
+        Arrival::Together { tolerance_s } if spread > tolerance_s + 1e-6 => {
+            Err(format!("{} / {}: arrivals spread over {spread:.3} s, more than {tolerance_s}", s.name, r.planner))
+        }
+        Arrival::Order(order) => {
+            for w in order.windows(2) {
+                if arrivals[w[1]] < arrivals[w[0]] - 1e-6 {
+                    return Err(format!(
+                        "{} / {}: mission {} arrives before mission {}",
+                        s.name, r.planner, w[1], w[0]
+                    ));
+                }
+            }
+            Ok(())
+        }
+        _ => Ok(()),
+    }
 }
 
 /// The re-checker for vehicles with a turning radius (the flown fillet curve).

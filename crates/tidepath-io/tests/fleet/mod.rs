@@ -86,3 +86,25 @@ fn every_planner_planning_one_after_another_keeps_the_separation() {
         assert!(feasible.contains(&id), "{id} not feasible: {feasible:?}");
     }
 }
+
+#[test]
+fn jointly_planned_vehicles_arrive_together_when_asked() {
+    let s = Scenario::from_toml(include_str!("../data/fleet_together.toml"), "fleet_together.toml").unwrap();
+    let r = s.plan(&PlanRequest { seed: 1, ..PlanRequest::default() }, &mut |_| {}).unwrap();
+    assert!(r.status.is_success(), "{}", r.reason);
+    let a = r.fleet.as_ref().unwrap().arrival.as_ref().unwrap();
+    assert!(a.kept && a.spread_s <= 60.0, "{a:?}");
+    recheck_plan(&s, &r).unwrap();
+    crate::common::recheck_arrivals(&s, &r).unwrap();
+    // Planned one after another without regard to the others' arrivals, they break the rule,
+    // and every vehicle says so.
+    let alone = s.plan(&PlanRequest { planner: Some("astar".into()), ..PlanRequest::default() }, &mut |_| {}).unwrap();
+    assert!(!alone.status.is_success());
+    for m in &alone.missions {
+        assert!(
+            m.violations.iter().any(|v| v.kind == ViolationKind::Arrival && v.message.contains("together within 60 s")),
+            "{m:?}"
+        );
+    }
+    assert!(crate::common::recheck_arrivals(&s, &alone).is_err());
+}

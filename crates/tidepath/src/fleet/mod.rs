@@ -13,11 +13,13 @@
 //! at all ([`Presence::Leaves`]: launched at departure, recovered on arrival).
 
 mod approach;
+mod arrival;
 mod legs;
 #[cfg(test)]
 mod tests;
 
 pub use approach::{closest_approach, Approach};
+pub use arrival::{arrival_penalty, check_arrivals, Arrival, ArrivalCheck, Broken};
 pub use legs::{timed_legs, Leg};
 
 use crate::error::{Error, Result};
@@ -42,10 +44,16 @@ pub struct FleetRules {
     /// (vehicle a, vehicle b, separation) overrides, by mission index.
     pub pairs: Vec<(usize, usize, f64)>,
     pub presence: Presence,
+    /// When the vehicles must reach their goals.
+    pub arrival: Arrival,
 }
 
 /// Rules that check nothing: the default for a problem without a `[fleet]`.
-pub static NO_FLEET: FleetRules = FleetRules { separation_m: 0.0, pairs: Vec::new(), presence: Presence::Stays };
+pub static NO_FLEET: FleetRules =
+    FleetRules { separation_m: 0.0, pairs: Vec::new(), presence: Presence::Stays, arrival: Arrival::Free };
+
+/// Most vehicles whose arrivals are checked (a scenario holds at most 64 missions).
+const MAX_ARRIVALS: usize = 64;
 
 /// Penalty added to a joint objective per pair of vehicles that come too close, plus the
 /// same again times the shortfall as a fraction of the separation (so optimizers are led
@@ -59,9 +67,9 @@ impl FleetRules {
         self.pairs.iter().rev().find(|p| (p.0.min(p.1), p.0.max(p.1)) == (a, b)).map_or(self.separation_m, |p| p.2)
     }
 
-    /// Whether any pair of `n` vehicles has a separation to keep.
+    /// Whether `n` vehicles have a separation to keep or an arrival rule to meet.
     pub fn active(&self, n: usize) -> bool {
-        n >= 2 && (self.separation_m > 0.0 || self.pairs.iter().any(|p| p.2 > 0.0))
+        n >= 2 && (self.separation_m > 0.0 || self.pairs.iter().any(|p| p.2 > 0.0) || self.arrival != Arrival::Free)
     }
 
     /// These rules for the missions `kept` (indices into the full list), renumbered in that
@@ -69,7 +77,11 @@ impl FleetRules {
     pub fn subset(&self, kept: &[usize]) -> FleetRules {
         let at = |i: usize| kept.iter().position(|&k| k == i);
         let pairs = self.pairs.iter().filter_map(|&(a, b, m)| Some((at(a)?, at(b)?, m))).collect();
-        FleetRules { pairs, ..self.clone() }
+        let arrival = match &self.arrival {
+            Arrival::Order(order) => Arrival::Order(order.iter().filter_map(|&i| at(i)).collect()),
+            other => other.clone(),
+        };
+        FleetRules { pairs, arrival, ..self.clone() }
     }
 
     /// Checks the values, naming the field.
@@ -95,6 +107,26 @@ impl FleetRules {
                 ));
             }
         }
+        match &self.arrival {
+            Arrival::Together { tolerance_s } if !ok(*tolerance_s) => {
+                return Err(Error::input(
+                    "fleet.arrival_tolerance_s",
+                    format!("must be finite and >= 0, got {tolerance_s}"),
+                ));
+            }
+            Arrival::Order(order) => {
+                let mut seen = vec![false; vehicles];
+                for &i in order {
+                    if i >= vehicles || std::mem::replace(&mut seen[i], true) {
+                        return Err(Error::input(
+                            "fleet.arrival_order",
+                            format!("must list each of the {vehicles} vehicles at most once"),
+                        ));
+                    }
+                }
+            }
+            _ => {}
+        }
         Ok(())
     }
 }
@@ -115,6 +147,8 @@ pub struct FleetCheck {
     /// The closest approach of any two vehicles (mission indices and the approach).
     pub closest: Option<(usize, usize, Approach)>,
     pub conflicts: Vec<Conflict>,
+    /// The arrivals (with two or more vehicles planned).
+    pub arrival: Option<ArrivalCheck>,
 }
 
 impl FleetCheck {
@@ -124,7 +158,8 @@ impl FleetCheck {
         self.conflicts
             .iter()
             .map(|c| SEPARATION_PENALTY * (1.0 + ((c.required - c.approach.distance) / c.required).clamp(0.0, 1.0)))
-            .sum()
+            .sum::<f64>()
+            + self.arrival.as_ref().map_or(0.0, arrival_penalty)
     }
 }
 
@@ -147,6 +182,18 @@ pub fn check<P: AsRef<[Vec3]>>(
         }
     }
     let mut out = FleetCheck::default();
+    // Arrivals, without allocating: at most a handful of missions, checked in place.
+    if rules.arrival != Arrival::Free {
+        let mut arrivals = [(0usize, 0.0f64); MAX_ARRIVALS];
+        let mut m = 0;
+        for (i, l) in legs.iter().enumerate().take(n) {
+            if let (Some(last), true) = (l.last(), m < MAX_ARRIVALS) {
+                arrivals[m] = (i, last.3);
+                m += 1;
+            }
+        }
+        out.arrival = check_arrivals(&rules.arrival, &arrivals[..m]);
+    }
     for i in 0..n {
         for j in i + 1..n {
             if legs[i].is_empty() || legs[j].is_empty() {

@@ -48,7 +48,12 @@ fn presence_decides_what_happens_outside_the_missions() {
 
 #[test]
 fn pair_overrides_and_the_penalty() {
-    let rules = FleetRules { separation_m: 100.0, pairs: vec![(2, 0, 50.0)], presence: Presence::Stays };
+    let rules = FleetRules {
+        separation_m: 100.0,
+        pairs: vec![(2, 0, 50.0)],
+        presence: Presence::Stays,
+        arrival: Arrival::Free,
+    };
     assert_eq!(rules.separation(0, 2), 50.0);
     assert_eq!(rules.separation(1, 2), 100.0);
     assert!(rules.active(2) && !rules.active(1) && !NO_FLEET.active(5));
@@ -57,7 +62,8 @@ fn pair_overrides_and_the_penalty() {
     let bad = FleetRules { separation_m: f64::NAN, ..rules.clone() };
     assert!(bad.check(3).unwrap_err().to_string().contains("fleet.separation_m"));
     let approach = Approach { distance: 25.0, time: 0.0, at_a: Vec3::ZERO, at_b: Vec3::ZERO };
-    let c = FleetCheck { closest: None, conflicts: vec![Conflict { a: 0, b: 2, approach, required: 50.0 }] };
+    let c =
+        FleetCheck { closest: None, conflicts: vec![Conflict { a: 0, b: 2, approach, required: 50.0 }], arrival: None };
     assert_eq!(c.penalty(), SEPARATION_PENALTY * 1.5);
 }
 
@@ -124,4 +130,23 @@ fn the_closest_approach_agrees_with_dense_sampling_in_currents() {
         models[0].arrival_times(&paths[0], &mut times);
         assert!((legs[0].last().unwrap().3 - times[3]).abs() < 1e-6 * times[3].max(1.0), "case {case}");
     }
+}
+
+#[test]
+fn arrivals_together_and_in_order() {
+    let arrivals = [(0, 1000.0), (1, 1090.0), (2, 1030.0)];
+    let together = check_arrivals(&Arrival::Together { tolerance_s: 60.0 }, &arrivals).unwrap();
+    assert_eq!((together.spread_s, together.first, together.last), (90.0, (0, 1000.0), (1, 1090.0)));
+    assert_eq!(together.excess_s, 30.0);
+    assert_eq!(together.broken, Some(Broken::Spread { tolerance_s: 60.0 }));
+    assert_eq!(arrival_penalty(&together), SEPARATION_PENALTY * 1.5);
+    let loose = check_arrivals(&Arrival::Together { tolerance_s: 90.0 }, &arrivals).unwrap();
+    assert!(loose.broken.is_none() && arrival_penalty(&loose) == 0.0);
+    // Order 0, 1, 2: 2 arrives 60 s before 1.
+    let order = check_arrivals(&Arrival::Order(vec![0, 1, 2]), &arrivals).unwrap();
+    assert_eq!(order.broken, Some(Broken::Order { earlier: 1, later: 2, by_s: 60.0 }));
+    assert!(check_arrivals(&Arrival::Order(vec![0, 2, 1]), &arrivals).unwrap().broken.is_none());
+    assert!(check_arrivals(&Arrival::Free, &arrivals[..1]).is_none());
+    let bad = FleetRules { arrival: Arrival::Order(vec![0, 0]), ..FleetRules::default() };
+    assert!(bad.check(2).unwrap_err().to_string().contains("fleet.arrival_order"));
 }

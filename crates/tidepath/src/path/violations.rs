@@ -20,6 +20,8 @@ pub enum ViolationKind {
     Pitch,
     /// Two vehicles of a fleet come closer than their separation at the same time.
     Separation,
+    /// A fleet's arrivals break its rule (together within a tolerance, or an order).
+    Arrival,
 }
 
 /// One violated constraint. `index` is a waypoint index for bounds, depth and turn, a segment

@@ -3,7 +3,7 @@
 //! each with a violation naming both vehicles, the time, the places and the distance.
 
 use super::solve::MissionPlan;
-use crate::fleet::{self, FleetCheck, FleetRules};
+use crate::fleet::{self, Arrival, ArrivalCheck, Broken, FleetCheck, FleetRules};
 use crate::geom::Vec3;
 use crate::path::{PathModel, Violation, ViolationKind};
 
@@ -37,7 +37,41 @@ pub fn judge_fleet(models: &[PathModel<'_>], missions: &mut [MissionPlan], rules
             }
         }
     }
+    if let Some(a) = &check.arrival {
+        if let Some(why) = arrival_message(a, rules, missions) {
+            for m in missions.iter_mut().filter(|m| m.path().len() >= 2) {
+                let index = m.path().len() - 1;
+                m.violations.push(Violation { kind: ViolationKind::Arrival, index, message: why.clone() });
+                if m.feasible {
+                    m.feasible = false;
+                    m.reason = why.clone();
+                }
+            }
+        }
+    }
     Some(check)
+}
+
+/// Why the arrivals break the fleet's rule, naming the vehicles; `None` when they keep it.
+fn arrival_message(a: &ArrivalCheck, rules: &FleetRules, missions: &[MissionPlan]) -> Option<String> {
+    let name = |i: usize| missions[i].name.as_str();
+    Some(match a.broken.as_ref()? {
+        Broken::Spread { tolerance_s } => format!(
+            "the fleet arrives over {:.1} s ({} first at t = {:.1} s, {} last at t = {:.1} s); together within {tolerance_s} s is asked",
+            a.spread_s,
+            name(a.first.0),
+            a.first.1,
+            name(a.last.0),
+            a.last.1
+        ),
+        Broken::Order { earlier, later, by_s } => {
+            let order = match &rules.arrival {
+                Arrival::Order(o) => o.iter().map(|&i| name(i)).collect::<Vec<_>>().join(", "),
+                _ => String::new(),
+            };
+            format!("{} arrives {by_s:.1} s before {}; the order asked is {order}", name(*later), name(*earlier))
+        }
+    })
 }
 
 /// A position for messages: [x, y, z] in a local world, (longitude, latitude, depth) in a
