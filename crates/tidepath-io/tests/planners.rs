@@ -24,7 +24,8 @@ fn request(planner: &str, seed: u64) -> PlanRequest {
     PlanRequest { planner: Some(planner.into()), seed, iterations: Some(40), parallel: true, ..PlanRequest::default() }
 }
 
-/// The interface every planner of the table (and the toy registered by this test) must keep:
+/// The interface every planner of the table (and the toy registered by this test) must keep,
+/// on three single-vehicle scenarios and a two-vehicle fleet:
 /// deterministic for 1 and 4 threads, within its counted budget, plans re-checked by the
 /// independent sampler, each mission with a status, bad parameters named
 /// `planner.params.ID.FIELD`, flags it cannot honour refused naming the flag.
@@ -36,7 +37,7 @@ fn every_registered_planner_meets_the_interface() {
     for entry in components.planners.entries() {
         let caps = entry.build.caps;
         let mut planned = 0;
-        for name in ["demo", "salish", "headland"] {
+        for name in ["demo", "salish", "headland", "fleet-crossing"] {
             let s = load(name);
             // Sampling planners on a short budget (their default is 10,000 samples).
             let samples = caps.counts_unit(Unit::Samples).then_some(2000);
