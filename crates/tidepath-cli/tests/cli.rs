@@ -13,6 +13,22 @@ mod simulate;
 #[path = "cli/fleet.rs"]
 mod fleet;
 
+// The other end-to-end suites: one test binary links once, where eight took eight links.
+#[path = "cli/contract.rs"]
+mod contract;
+#[path = "cli/engineers.rs"]
+mod engineers;
+#[path = "cli/experiments.rs"]
+mod experiments;
+#[path = "cli/flown.rs"]
+mod flown;
+#[path = "cli/hardening.rs"]
+mod hardening;
+#[path = "cli/no_route.rs"]
+mod no_route;
+#[path = "cli/numbers.rs"]
+mod numbers;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

@@ -17,8 +17,6 @@ fn scenarios() -> Vec<Scenario> {
         ["demo", "salish", "headland"].iter().map(|n| tidepath_io::scenario::load(n).unwrap()).collect();
     out.push(Scenario::from_toml(include_str!("data/moving_jet.toml"), "moving_jet.toml").unwrap());
     out.push(Scenario::from_toml(include_str!("data/tidal_grid.toml"), "tidal_grid.toml").unwrap());
-    // Two vehicles that must keep 150 m apart: the separation is re-checked too.
-    out.push(tidepath_io::scenario::load("fleet-crossing").unwrap());
     out
 }
 

@@ -4,6 +4,14 @@
 //!
 //! Set `TIDEPATH_PLOT_DIR` to also write the SVGs there, to look at them.
 
+// The other figure suites, as modules of this one test binary (one link instead of four).
+#[path = "plot/plot_failures.rs"]
+mod plot_failures;
+#[path = "plot/plot_flown.rs"]
+mod plot_flown;
+#[path = "plot/plot_smoke.rs"]
+mod plot_smoke;
+
 use tidepath::geom::{Aabb, Vec2, Vec3};
 use tidepath::world::terrain::{GaussianPeaks, Peak};
 use tidepath::world::{Current, Obstacle, Shape, Terrain, World};
