@@ -101,3 +101,31 @@ impl FleetReport {
         }
     }
 }
+
+/// One line on a path's segment speeds for `plan` and `eval`: slowest, fastest and the
+/// length-weighted mean through the water ("0.41 to 2.06 m/s through the water, 1.12 m/s on
+/// average over the length").
+pub fn speeds_line(points: &[tidepath::geom::Vec3], speeds: &[f64]) -> String {
+    let (mut lo, mut hi, mut len, mut weighted) = (f64::INFINITY, 0.0f64, 0.0, 0.0);
+    for (w, &v) in points.windows(2).zip(speeds) {
+        let l = w[0].distance(w[1]);
+        (lo, hi, len, weighted) = (lo.min(v), hi.max(v), len + l, weighted + l * v);
+    }
+    let mean = if len > 0.0 { weighted / len } else { hi };
+    format!("{lo:.2} to {hi:.2} m/s through the water, {mean:.2} m/s on average over the length")
+}
+
+#[cfg(test)]
+mod tests {
+    use tidepath::geom::Vec3;
+
+    #[test]
+    fn speeds_line_weights_the_mean_by_length() {
+        let p = [Vec3::ZERO, Vec3::new(100.0, 0.0, 0.0), Vec3::new(100.0, 300.0, 0.0)];
+        // (100 * 1 + 300 * 2) / 400 = 1.75
+        assert_eq!(
+            super::speeds_line(&p, &[1.0, 2.0]),
+            "1.00 to 2.00 m/s through the water, 1.75 m/s on average over the length"
+        );
+    }
+}

@@ -55,6 +55,11 @@ pub struct MissionReport {
     /// Arrival time (s, scenario clock) at each point of the final path; with a turning
     /// radius, at an interior waypoint the time halfway round its turn.
     pub times: Vec<f64>,
+    /// The through-water speed (m/s) of each segment of the final path, for a vehicle with a
+    /// speed range; absent when every segment is flown at the vehicle's cruise speed. `eval`
+    /// flies the path at these speeds.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub speeds: Option<Vec<f64>>,
     /// With a turning radius: the curve the vehicle flies along the final path (a fillet at
     /// each interior waypoint), as the evaluation sampled it, with its times. Absent without a
     /// radius. Never read back as a route: the waypoints are the route.
@@ -255,6 +260,7 @@ impl MissionReport {
             smoothed: m.smoothed.as_deref().map(points),
             raw_cost: m.raw_cost,
             times: m.times.clone(),
+            speeds: m.speeds.clone(),
             flown: m.flown.as_ref().map(FlownReport::new),
             cost: finite(m.cost),
             cost_terms: m.terms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect(),
@@ -384,6 +390,8 @@ struct PathEntry {
     #[serde(default)]
     smoothed: Option<Vec<[f64; 3]>>,
     #[serde(default)]
+    speeds: Option<Vec<f64>>,
+    #[serde(default)]
     cost: Option<f64>,
 }
 
@@ -426,6 +434,9 @@ pub enum RouteFrame {
 pub struct PlanFile {
     /// (mission name if given, final path).
     pub paths: Vec<(Option<String>, Vec<Vec3>)>,
+    /// Per path, its segments' through-water speeds when the file gives them (plan JSON
+    /// `speeds`); empty for formats without speeds.
+    pub speeds: Vec<Option<Vec<f64>>>,
     /// The recorded total cost, if any.
     pub cost: Option<f64>,
     pub planner: Option<String>,
@@ -492,7 +503,10 @@ impl PlanFile {
             }
             (Some(m), None) => m.into_iter().enumerate().map(|(i, e)| (format!("missions[{i}]."), e)).collect(),
             (None, Some(w)) => {
-                vec![(String::new(), PathEntry { name: None, waypoints: w, smoothed: raw.smoothed, cost: raw.cost })]
+                vec![(
+                    String::new(),
+                    PathEntry { name: None, waypoints: w, smoothed: raw.smoothed, speeds: None, cost: raw.cost },
+                )]
             }
             (None, None) => return Err(Error::input(source, "no path: expected `missions` or `waypoints`")),
         };
@@ -500,6 +514,7 @@ impl PlanFile {
             return Err(Error::input(format!("{source}: missions"), "is empty"));
         }
         let mut paths = Vec::with_capacity(entries.len());
+        let mut speeds = Vec::with_capacity(entries.len());
         for (prefix, e) in entries {
             let lists = [("waypoints", Some(&e.waypoints)), ("smoothed", e.smoothed.as_ref())];
             for (name, list) in lists.into_iter().filter_map(|(n, l)| l.map(|l| (n, l))) {
@@ -525,6 +540,22 @@ impl PlanFile {
                 }
             }
             let _ = e.cost;
+            if let Some(v) = &e.speeds {
+                let segments = e.smoothed.as_ref().unwrap_or(&e.waypoints).len() - 1;
+                if v.len() != segments {
+                    return Err(Error::input(
+                        format!("{source}: {prefix}speeds"),
+                        format!("one speed per segment of the final path: expected {segments}, got {}", v.len()),
+                    ));
+                }
+                if let Some((i, s)) = v.iter().enumerate().find(|(_, s)| !(s.is_finite() && **s > 0.0)) {
+                    return Err(Error::input(
+                        format!("{source}: {prefix}speeds[{i}]"),
+                        format!("must be a positive number of m/s, got {s}"),
+                    ));
+                }
+            }
+            speeds.push(e.speeds.clone());
             // Longitude/latitude files give depth positive down; points hold the elevation.
             let sign = if frame == Some(RouteFrame::LonLat) { -1.0 } else { 1.0 };
             let pts = e
@@ -538,6 +569,7 @@ impl PlanFile {
         }
         Ok(Self {
             paths,
+            speeds,
             cost: raw.cost,
             planner: raw.planner,
             scenario: raw.scenario,

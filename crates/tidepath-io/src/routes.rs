@@ -111,7 +111,16 @@ fn finish(routes: Vec<Route>, frame: RouteFrame, format: &'static str, source: &
         }
         paths.push((r.name, r.points));
     }
-    Ok(PlanFile { paths, cost: None, planner: None, scenario: None, version: 1, frame: Some(frame), format })
+    Ok(PlanFile {
+        paths,
+        speeds: Vec::new(),
+        cost: None,
+        planner: None,
+        scenario: None,
+        version: 1,
+        frame: Some(frame),
+        format,
+    })
 }
 
 fn geojson_routes(text: &str, source: &str) -> Result<Vec<Route>> {

@@ -125,6 +125,7 @@ mod short {
             let paths = problem.missions.iter().map(|m| vec![m.start, (m.start + m.goal) * 0.5]).collect();
             PlannerOutput {
                 paths,
+                speeds: Vec::new(),
                 claim: None,
                 stats: SearchStats { stop_reason: StopReason::WallTime, ..SearchStats::default() },
                 graphs: Vec::new(),

@@ -221,6 +221,7 @@ fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
             depth_min: 0.0,
             depth_max: 500.0,
             turn_radius: None,
+            speed_range: Some((0.5, 3.0)),
         };
         let n = rng.random_range(2..5);
         let points: Vec<Vec3> = (0..n)
@@ -230,7 +231,11 @@ fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
             .collect();
         let settings = ModelSettings { current_step: 40.0, ..ModelSettings::default() };
         let mission = Mission::new("m", vehicle.clone(), points[0], points[n - 1], 0.0);
-        let model = PathModel::new(&world, &mission, &settings);
+        let base_model = PathModel::new(&world, &mission, &settings);
+        // Every other case flies each segment at its own speed (a plan over a speed range).
+        let speeds: Vec<f64> = (1..n).map(|_| rng.random_range(0.5..3.0)).collect();
+        let speeds: Option<&[f64]> = (case % 2 == 1).then_some(&speeds);
+        let model = base_model.with_speeds(speeds);
         let mut times = Vec::new();
         if !model.assess(&points, &mut times).feasible() {
             continue;
@@ -239,7 +244,8 @@ fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
         let mut t0 = 0.0;
         let mut closest = f64::INFINITY;
         for (i, w) in points.windows(2).enumerate() {
-            let pieces = own_clock(&world, w[0], w[1], t0, vehicle.speed, settings.current_step)
+            let v = speeds.map_or(vehicle.speed, |s| s[i]);
+            let pieces = own_clock(&world, w[0], w[1], t0, v, settings.current_step)
                 .unwrap_or_else(|| panic!("case {case}: segment {i} judged flyable but the current blocks it"));
             for &(p0, p1, ta, tb) in &pieces {
                 for k in 0..=40 {

@@ -86,8 +86,9 @@ fn salish_strait_turns_is_flown_by_hybrid_astar_and_by_dubins_smoothed_theta_sta
         let r = s.plan(&request(planner, smoother, 1), &mut |_| {}).unwrap();
         assert!(r.status.is_success(), "{planner}: {} {}", r.status, r.reason);
         let m = &r.missions[0];
-        let c = common::flown::recheck_flown(&s.world, &s.missions[0].vehicle, &s.settings, &m.points(), &m.times, r0)
-            .unwrap_or_else(|e| panic!("{planner}: {e}"));
+        let c =
+            common::flown::recheck_flown(&s.world, &s.missions[0].vehicle, &s.settings, &m.points(), &m.times, &[], r0)
+                .unwrap_or_else(|e| panic!("{planner}: {e}"));
         assert!(c.samples > 10_000, "{planner}: only {} samples", c.samples);
         // The sampled curve's own curvature: at most 1 / radius, with no slack.
         assert!(c.min_circumradius >= r0 * (1.0 - 1e-6), "{planner}: {c:?}");

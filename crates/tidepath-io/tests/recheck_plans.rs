@@ -123,12 +123,12 @@ fn the_rechecker_finds_what_it_is_shown() {
         velocity,
         window: None,
     });
-    let e = common::recheck_path(&s.world, &s.missions[0].vehicle, &s.settings, &path, &times).unwrap_err();
+    let e = common::recheck_path(&s.world, &s.missions[0].vehicle, &s.settings, &path, &times, &[]).unwrap_err();
     assert!(e.contains(&format!("obstacle {}", s.world.obstacles.len() - 1)), "{e}");
     s.world.obstacles.pop();
     let mut late = times.clone();
     late[k + 1] += 1.0;
-    assert!(common::recheck_path(&s.world, &s.missions[0].vehicle, &s.settings, &path, &late)
+    assert!(common::recheck_path(&s.world, &s.missions[0].vehicle, &s.settings, &path, &late, &[])
         .unwrap_err()
         .contains("arrival"));
 }
@@ -152,7 +152,7 @@ fn the_flown_rechecker_finds_what_it_is_shown() {
     let model = PathModel::new(&world, &mission, &settings);
     let mut times = Vec::new();
     assert!(model.assess(&path, &mut times).feasible());
-    let c = common::flown::recheck_flown(&world, &vehicle, &settings, &path, &times, 40.0).unwrap();
+    let c = common::flown::recheck_flown(&world, &vehicle, &settings, &path, &times, &[], 40.0).unwrap();
     assert!(c.samples > 500, "{} samples", c.samples);
     assert!((c.min_circumradius - 40.0).abs() < 1e-6, "{c:?}");
     // Halfway round the turn, at the time the vehicle is there.
@@ -168,15 +168,15 @@ fn the_flown_rechecker_finds_what_it_is_shown() {
         velocity,
         window: None,
     });
-    let e = common::flown::recheck_flown(&w2, &vehicle, &settings, &path, &times, 40.0).unwrap_err();
+    let e = common::flown::recheck_flown(&w2, &vehicle, &settings, &path, &times, &[], 40.0).unwrap_err();
     assert!(e.contains("obstacle 0"), "{e}");
     // A corner whose legs allow only 30 m.
     let short = [Vec3::new(170.0, 10.0, -50.0), Vec3::new(200.0, 10.0, -40.0), Vec3::new(200.0, 200.0, -40.0)];
-    let e = common::flown::recheck_flown(&world, &vehicle, &settings, &short, &times, 40.0).unwrap_err();
+    let e = common::flown::recheck_flown(&world, &vehicle, &settings, &short, &times, &[], 40.0).unwrap_err();
     assert!(e.contains("flown at radius 30.000 m"), "{e}");
     let mut late = times.clone();
     late[1] += 0.5;
-    assert!(common::flown::recheck_flown(&world, &vehicle, &settings, &path, &late, 40.0)
+    assert!(common::flown::recheck_flown(&world, &vehicle, &settings, &path, &late, &[], 40.0)
         .unwrap_err()
         .contains("halfway"));
 }

@@ -50,6 +50,7 @@ fn bench(c: &mut Criterion) {
         depth_max: 400.0,
         safety_distance: 0.0,
         turn_radius: None,
+        speed_range: None,
     };
     let params: toml::Table = toml::from_str("range = 1000.0\nresolution = 25.0").unwrap();
     let mut group = c.benchmark_group("sampling_10000");

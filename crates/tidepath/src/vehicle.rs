@@ -19,6 +19,11 @@ pub struct Vehicle {
     /// ([`crate::kinematics::fillet`]) and every check runs on that flown curve; `None` keeps
     /// only the angle limit at waypoints.
     pub turn_radius: Option<f64>,
+    /// Through-water speeds (m/s) the vehicle may fly a segment at, lowest and highest, with
+    /// `speed` between them. With a range, speed is a decision: a plan gives each segment its
+    /// own speed in it (fleets meeting an arrival time, energy against time); `None` flies
+    /// every segment at `speed`.
+    pub speed_range: Option<(f64, f64)>,
 }
 
 impl Vehicle {
@@ -30,6 +35,28 @@ impl Vehicle {
     /// Lowest allowed z.
     pub fn z_min(&self) -> f64 {
         -self.depth_max
+    }
+
+    /// The highest through-water speed a segment may be flown at.
+    pub fn max_speed(&self) -> f64 {
+        self.speed_range.map_or(self.speed, |(_, hi)| hi)
+    }
+
+    /// The speeds graph and sampling planners try on each edge, fastest first: the range's
+    /// top, the cruise speed and the range's bottom (distinct ones only); just the cruise
+    /// speed without a range. Three levels keep the edge cost at most three motion checks.
+    pub fn speed_choices(&self) -> impl Iterator<Item = f64> {
+        let (lo, hi) = self.speed_range.unwrap_or((self.speed, self.speed));
+        let levels = [hi, self.speed, lo];
+        (0..3).filter_map(move |k| (k == 0 || levels[k] < levels[k - 1]).then_some(levels[k]))
+    }
+
+    /// `v` brought into the vehicle's speed range (the cruise speed without one).
+    pub fn clamp_speed(&self, v: f64) -> f64 {
+        match self.speed_range {
+            Some((lo, hi)) if v.is_finite() => v.clamp(lo, hi),
+            Some(_) | None => self.speed,
+        }
     }
 }
 
@@ -45,6 +72,27 @@ impl Default for Vehicle {
             depth_max: 6000.0,
             safety_distance: 10.0,
             turn_radius: None,
+            speed_range: None,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn speed_choices_are_distinct_and_fastest_first() {
+        let v = Vehicle { speed: 1.5, speed_range: Some((0.5, 2.0)), ..Vehicle::default() };
+        assert_eq!(v.speed_choices().collect::<Vec<_>>(), vec![2.0, 1.5, 0.5]);
+        assert_eq!(v.max_speed(), 2.0);
+        let top = Vehicle { speed: 2.0, speed_range: Some((0.5, 2.0)), ..Vehicle::default() };
+        assert_eq!(top.speed_choices().collect::<Vec<_>>(), vec![2.0, 0.5]);
+        let fixed = Vehicle::default();
+        assert_eq!(fixed.speed_choices().collect::<Vec<_>>(), vec![1.5]);
+        assert_eq!(fixed.max_speed(), 1.5);
+        assert_eq!(v.clamp_speed(3.0), 2.0);
+        assert_eq!(v.clamp_speed(f64::NAN), 1.5);
+        assert_eq!(fixed.clamp_speed(3.0), 1.5);
     }
 }

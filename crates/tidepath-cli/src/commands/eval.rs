@@ -25,7 +25,7 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
     let scenario = scenario::load(&args.scenario)?;
     let plan = tidepath_io::routes::read(&args.plan)?;
     let paths = scenario.route_paths(&plan, &args.plan.display().to_string())?;
-    let judged = scenario.evaluate_paths(&paths)?;
+    let judged = scenario.evaluate_routes(&paths, &plan.speeds)?;
 
     let what = match plan.format {
         "plan JSON" => format!("plan format version {}", plan.version),
@@ -61,6 +61,9 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
             );
             if let Some(line) = radius.and_then(|r| super::plan::turns_line(x, r)) {
                 println!("{indent}turns: {line}");
+            }
+            if let Some(v) = &m.speeds {
+                println!("{indent}speeds: {}", tidepath_io::fleet_report::speeds_line(m.path(), v));
             }
         }
         if m.feasible {

@@ -324,6 +324,9 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
                 hms(x.travel_time_s),
                 r.travel_time_model,
             );
+            if let Some(v) = &m.speeds {
+                println!("{indent}speeds         {}", tidepath_io::fleet_report::speeds_line(&m.points(), v));
+            }
             let clearance = x.min_clearance_m.map_or("n/a".to_string(), |c| format!("{c:.1} m"));
             println!(
                 "{indent}min clearance  {clearance}; max turn {:.1} deg; max pitch {:.1} deg; collisions {}",

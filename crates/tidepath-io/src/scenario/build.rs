@@ -69,9 +69,8 @@ impl Scenario {
         let mut world = build_world(&local.spec.world)?;
         world.frame = local.frame.clone();
         let vehicle = build_vehicle(&spec.vehicle, "vehicle")?;
-        let mut warnings = legacy_warnings(&spec.vehicle, "vehicle");
-        warnings.extend(local.warnings);
-        let missions = build_missions(&local.spec, &vehicle, &world, &mut warnings)?;
+        let mut warnings = local.warnings;
+        let missions = build_missions(&local.spec, &vehicle, &world)?;
         let settings = build_settings(&spec.model, &world)?;
         // Every change is checked now, so a bad one costs no run.
         let cx = super::changes_build::ChangeContext {
@@ -193,12 +192,7 @@ pub const MAX_COORDINATE: f64 = 1e8;
 #[allow(unused_imports)]
 pub use tidepath::encoding::MAX_WAYPOINTS;
 
-fn build_missions(
-    spec: &ScenarioSpec,
-    vehicle: &Vehicle,
-    world: &World,
-    warnings: &mut Vec<String>,
-) -> Result<Vec<Mission>> {
+fn build_missions(spec: &ScenarioSpec, vehicle: &Vehicle, world: &World) -> Result<Vec<Mission>> {
     let mut out = Vec::new();
     match (&spec.mission, spec.missions.is_empty()) {
         (Some(_), false) => {
@@ -227,10 +221,7 @@ fn build_missions(
                     return Err(Error::input(field("name"), format!("'{}' is used twice", m.name)));
                 }
                 let v = match &m.vehicle {
-                    Some(vs) => {
-                        warnings.extend(legacy_warnings(vs, &field("vehicle")));
-                        build_vehicle(vs, &field("vehicle"))?
-                    }
+                    Some(vs) => build_vehicle(vs, &field("vehicle"))?,
                     None => vehicle.clone(),
                 };
                 let (start, goal) = (Vec3::from_array(m.start), Vec3::from_array(m.goal));
@@ -255,12 +246,30 @@ fn check_time(field: &str, t: f64) -> Result<()> {
     Ok(())
 }
 
-fn legacy_warnings(v: &VehicleSpec, field: &str) -> Vec<String> {
-    [("speed_min", v.speed_min), ("speed_max", v.speed_max)]
-        .into_iter()
-        .filter(|(_, x)| x.is_some())
-        .map(|(name, _)| format!("{field}.{name} is accepted for older files but no planner uses it yet; ignored"))
-        .collect()
+/// The vehicle's speed range from `speed_min` and `speed_max` (one given alone pairs with the
+/// cruise speed), each a plausible speed and the cruise speed between them.
+fn build_speed_range(s: &VehicleSpec, at: &str) -> Result<Option<(f64, f64)>> {
+    if s.speed_min.is_none() && s.speed_max.is_none() {
+        return Ok(None);
+    }
+    for (name, v) in [("speed_min", s.speed_min), ("speed_max", s.speed_max)] {
+        if let Some(v) = v {
+            if !(MIN_SPEED..=MAX_SPEED).contains(&v) {
+                return Err(Error::input(
+                    format!("{at}.{name}"),
+                    format!("must be in [{MIN_SPEED}, {MAX_SPEED}] m/s, got {v:?}"),
+                ));
+            }
+        }
+    }
+    let (lo, hi) = (s.speed_min.unwrap_or(s.speed), s.speed_max.unwrap_or(s.speed));
+    if !(lo <= s.speed && s.speed <= hi) {
+        return Err(Error::input(
+            format!("{at}.speed"),
+            format!("must lie in the speed range [speed_min, speed_max] = [{lo}, {hi}] m/s, got {}", s.speed),
+        ));
+    }
+    Ok(Some((lo, hi)))
 }
 
 pub(super) fn finite_positive(field: &str, v: f64) -> Result<f64> {
@@ -301,7 +310,9 @@ fn build_vehicle(s: &VehicleSpec, at: &str) -> Result<Vehicle> {
         }
         r => r,
     };
+    let speed_range = build_speed_range(s, at)?;
     Ok(Vehicle {
+        speed_range,
         turn_radius,
         speed: s.speed,
         max_turn: s.max_turn_deg.to_radians(),

@@ -72,6 +72,13 @@ pub const BUILTIN: &[Entry<&str>] = &[
         params: &[],
         build: include_str!("../../scenarios/fleet-crossing.toml"),
     },
+    Entry {
+        id: "fleet-rendezvous",
+        description: "3-D: three AUVs over the demo seabed meet at one point, arriving within 60 s of each other, 100 m apart, each choosing its speeds in 0.5-4 kn",
+        citation: "tidepath (synthetic; speeds and arrival rule after ijs2023 section IV.C)",
+        params: &[],
+        build: include_str!("../../scenarios/fleet-rendezvous.toml"),
+    },
 ];
 
 pub fn registry() -> Registry<&'static str> {

@@ -338,6 +338,31 @@ impl Scenario {
 
     /// Judges one path per mission (start and goal included).
     pub fn evaluate_paths(&self, paths: &[Vec<Vec3>]) -> Result<Vec<MissionPlan>> {
+        self.evaluate_routes(paths, &[])
+    }
+
+    /// [`Scenario::evaluate_paths`] with each path's segment speeds where given (`speeds[i]`
+    /// for path i; missing or `None`: the cruise speed). A speed outside the vehicle's speed
+    /// range, or any speed for a vehicle without one other than its cruise speed, is bad
+    /// input naming the mission and segment.
+    pub fn evaluate_routes(&self, paths: &[Vec<Vec3>], speeds: &[Option<Vec<f64>>]) -> Result<Vec<MissionPlan>> {
+        for (i, s) in speeds.iter().enumerate() {
+            let (Some(s), Some(m)) = (s, self.missions.get(i)) else { continue };
+            let veh = &m.vehicle;
+            let (lo, hi) = veh.speed_range.unwrap_or((veh.speed, veh.speed));
+            if let Some((k, v)) = s.iter().enumerate().find(|(_, v)| !(lo..=hi).contains(*v)) {
+                let field = if self.missions.len() == 1 {
+                    format!("speeds[{k}]")
+                } else {
+                    format!("missions[{i}].speeds[{k}]")
+                };
+                let range = match veh.speed_range {
+                    Some(_) => format!("the vehicle's speed range [{lo}, {hi}] m/s"),
+                    None => format!("the vehicle's speed {lo} m/s (it has no speed_min/speed_max)"),
+                };
+                return Err(Error::input(field, format!("{v} m/s is outside {range}")));
+            }
+        }
         if paths.len() != self.missions.len() {
             return Err(Error::input(
                 "plan",
@@ -364,7 +389,16 @@ impl Scenario {
         let mut missions: Vec<MissionPlan> = paths
             .iter()
             .enumerate()
-            .map(|(i, p)| planner::solve::judge(&models[i], cost.as_ref(), p, &self.missions[i].name))
+            .map(|(i, p)| {
+                let given = speeds.get(i).and_then(|s| s.as_deref());
+                // A vehicle with a range flies a route without speeds at its cruise speed.
+                let cruise = self.missions[i]
+                    .vehicle
+                    .speed_range
+                    .map(|_| vec![self.missions[i].vehicle.speed; p.len().saturating_sub(1)]);
+                let model = models[i].with_speeds(given.or(cruise.as_deref()));
+                planner::solve::judge(&model, cost.as_ref(), p, &self.missions[i].name)
+            })
             .collect();
         planner::judge_fleet(&models, &mut missions, &self.fleet);
         Ok(missions)

@@ -311,9 +311,11 @@ pub struct JetSpec {
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct VehicleSpec {
+    /// Cruise speed through the water (m/s): every segment's speed without a range, the
+    /// default speed and the time normalisation with one.
     pub speed: f64,
-    /// Accepted so files written for earlier versions still load; no planner reads them yet
-    /// (speed choice comes with the wpa2017 planners). Loading warns.
+    /// Lowest and highest through-water speed (m/s) a plan may give a segment; with either,
+    /// speed becomes a decision (one alone pairs with `speed`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub speed_min: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]

@@ -140,6 +140,14 @@ impl Scenario {
                 ),
             ));
         }
+        if let Some((lo, hi)) = self.missions[0].vehicle.speed_range {
+            return Err(Error::input(
+                "vehicle.speed_min",
+                format!(
+                    "simulate flies every segment at the cruise speed; a speed range ([{lo}, {hi}] m/s) is for `plan` and `eval` (remove speed_min and speed_max to simulate)"
+                ),
+            ));
+        }
         self.sim_params(req)?;
         if let Some(t) = req.total_time_limit_s {
             check_wall_time("--total-time-limit", t)?;

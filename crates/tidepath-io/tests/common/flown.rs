@@ -117,6 +117,7 @@ pub fn recheck_flown(
     settings: &ModelSettings,
     path: &[Vec3],
     times: &[f64],
+    speeds: &[f64],
     r: f64,
 ) -> Result<Rechecked, String> {
     if path.len() != times.len() {
@@ -138,7 +139,8 @@ pub fn recheck_flown(
                turn: bool,
                out: &mut Vec<(Vec3, f64, bool)>|
      -> Result<(), String> {
-        let pieces = clock(world, settings, vehicle.speed, a, b, *t).ok_or("the current blocks the vehicle")?;
+        let v = super::speed_at(vehicle, speeds, times, *t);
+        let pieces = clock(world, settings, v, a, b, *t).ok_or("the current blocks the vehicle")?;
         let len = a.distance(b).max(f64::MIN_POSITIVE);
         let t_start = *t;
         let mut done = 0.0;

@@ -94,14 +94,27 @@ pub fn distance(o: &Obstacle, p: Vec3, t: f64) -> f64 {
     }
 }
 
-/// Re-checks one path (start and goal included) with its reported arrival times. Returns the
-/// number of samples taken, or what is wrong.
+/// The through-water speed at time `t` of a plan flown at `speeds` (one per segment; empty:
+/// the cruise speed) with `times` at its waypoints: the speed of the last waypoint reached.
+/// With a turning radius a waypoint's time is halfway round its turn, where the speed changes.
+pub fn speed_at(vehicle: &Vehicle, speeds: &[f64], times: &[f64], t: f64) -> f64 {
+    if speeds.is_empty() {
+        return vehicle.speed;
+    }
+    let i = times.iter().rposition(|&x| x <= t).unwrap_or(0);
+    speeds[i.min(speeds.len() - 1)]
+}
+
+/// Re-checks one path (start and goal included) with its reported arrival times, segment i
+/// flown at `speeds[i]` (empty: the cruise speed). Returns the number of samples taken, or
+/// what is wrong.
 pub fn recheck_path(
     world: &World,
     vehicle: &Vehicle,
     settings: &ModelSettings,
     path: &[Vec3],
     times: &[f64],
+    speeds: &[f64],
 ) -> Result<usize, String> {
     if path.len() != times.len() {
         return Err(format!("{} points but {} times", path.len(), times.len()));
@@ -110,7 +123,8 @@ pub fn recheck_path(
     let mut samples = 0;
     let mut t0 = times[0];
     for (i, w) in path.windows(2).enumerate() {
-        let pieces = clock(world, settings, vehicle.speed, w[0], w[1], t0)
+        let v = if speeds.is_empty() { vehicle.speed } else { speeds[i] };
+        let pieces = clock(world, settings, v, w[0], w[1], t0)
             .ok_or_else(|| format!("segment {i}: the current blocks the vehicle"))?;
         for &(p0, p1, ta, tb) in &pieces {
             let n = MIN_SAMPLES.max((p0.distance(p1) / MAX_SPACING).ceil() as usize);
@@ -153,10 +167,18 @@ pub fn recheck_plan(s: &Scenario, r: &PlanReport) -> Result<usize, String> {
             continue;
         }
         let path = m.points();
+        let speeds = m.speeds.as_deref().unwrap_or(&[]);
+        if let (Some(v), Some((lo, hi))) = (m.speeds.as_ref(), mission.vehicle.speed_range) {
+            if v.len() + 1 != path.len() || v.iter().any(|x| !(lo..=hi).contains(x)) {
+                return Err(format!("mission {}: speeds {v:?} not one per segment within [{lo}, {hi}]", m.name));
+            }
+        }
         let checked = match mission.vehicle.turn_radius {
-            Some(radius) => flown::recheck_flown(&s.world, &mission.vehicle, &s.settings, &path, &m.times, radius)
-                .map(|c| c.samples),
-            None => recheck_path(&s.world, &mission.vehicle, &s.settings, &path, &m.times),
+            Some(radius) => {
+                flown::recheck_flown(&s.world, &mission.vehicle, &s.settings, &path, &m.times, speeds, radius)
+                    .map(|c| c.samples)
+            }
+            None => recheck_path(&s.world, &mission.vehicle, &s.settings, &path, &m.times, speeds),
         };
         samples +=
             checked.map_err(|e| format!("{} / {} seed {} mission {}: {e}", s.name, r.planner, r.seed, m.name))?;
@@ -187,8 +209,10 @@ pub fn recheck_separation(s: &Scenario, r: &PlanReport) -> Result<usize, String>
             None => (m.points(), m.times.clone()),
         };
         let mut pieces = Vec::new();
+        let speeds = m.speeds.as_deref().unwrap_or(&[]);
         for (w, &t0) in pts.windows(2).zip(&times) {
-            let p = clock(&s.world, &s.settings, mission.vehicle.speed, w[0], w[1], t0)
+            let v = speed_at(&mission.vehicle, speeds, &m.times, t0);
+            let p = clock(&s.world, &s.settings, v, w[0], w[1], t0)
                 .ok_or_else(|| format!("mission {}: the current blocks the vehicle", m.name))?;
             pieces.extend(p);
         }
@@ -241,8 +265,10 @@ pub fn recheck_arrivals(s: &Scenario, r: &PlanReport) -> Result<(), String> {
             None => (m.points(), m.times.clone()),
         };
         let mut t = times.first().copied().ok_or_else(|| format!("mission {}: no times", m.name))?;
+        let speeds = m.speeds.as_deref().unwrap_or(&[]);
         for (w, &t0) in pts.windows(2).zip(&times) {
-            let p = clock(&s.world, &s.settings, mission.vehicle.speed, w[0], w[1], t0)
+            let v = speed_at(&mission.vehicle, speeds, &m.times, t0);
+            let p = clock(&s.world, &s.settings, v, w[0], w[1], t0)
                 .ok_or_else(|| format!("mission {}: the current blocks the vehicle", m.name))?;
             t = p.last().map_or(t0, |x| x.3);
         }

@@ -63,7 +63,7 @@ impl Planner for StraightLine {
         }
         stats.stop_reason = watch.stop_reason(Usage::default(), 0.0).unwrap_or(StopReason::Completed);
         stats.elapsed = watch.elapsed();
-        PlannerOutput { paths, claim: None, stats, graphs: Vec::new() }
+        PlannerOutput { paths, speeds: Vec::new(), claim: None, stats, graphs: Vec::new() }
     }
 }
 

@@ -108,3 +108,64 @@ fn jointly_planned_vehicles_arrive_together_when_asked() {
     }
     assert!(crate::common::recheck_arrivals(&s, &alone).is_err());
 }
+
+/// `fleet-rendezvous` planned jointly by DE: three AUVs arrive within 60 s of each other with
+/// every segment's speed inside 0.5-4 kn, the nearer ones slower; the independent re-checker
+/// flies the same speeds; the plan file read back and evaluated gives the same verdict, and
+/// at the cruise speed (the same routes without their speeds) the rule breaks.
+#[test]
+fn the_rendezvous_arrives_together_by_choosing_speeds() {
+    let s = tidepath_io::scenario::load("fleet-rendezvous").unwrap();
+    let r =
+        s.plan(&PlanRequest { planner: Some("de".into()), seed: 1, ..PlanRequest::default() }, &mut |_| {}).unwrap();
+    assert!(r.status.is_success(), "{}", r.reason);
+    let a = r.fleet.as_ref().unwrap().arrival.as_ref().unwrap();
+    assert!(a.kept && a.spread_s <= 60.0, "{a:?}");
+    let (lo, hi) = s.vehicle.speed_range.unwrap();
+    let mut mean = Vec::new();
+    for m in &r.missions {
+        let v = m.speeds.as_ref().expect("a vehicle with a speed range gets speeds");
+        assert_eq!(v.len() + 1, m.points().len());
+        assert!(v.iter().all(|x| (lo..=hi).contains(x)), "{v:?}");
+        mean.push(m.metrics.unwrap().length_m / m.metrics.unwrap().travel_time_s);
+    }
+    // auv-south has 7.3 km to go, auv-west 14.3 km: the nearer one is slower over ground.
+    assert!(mean[2] < mean[0], "{mean:?}");
+    recheck_plan(&s, &r).unwrap();
+    crate::common::recheck_arrivals(&s, &r).unwrap();
+
+    // Read back from the plan file: the same times and verdict.
+    let file = tidepath_io::plan_json::PlanFile::parse(&r.to_json(), "r.json").unwrap();
+    let judged = s.evaluate_routes(&file.mission_paths(), &file.speeds).unwrap();
+    for (j, m) in judged.iter().zip(&r.missions) {
+        assert!(j.feasible, "{}: {:?}", j.name, j.violations);
+        let (t_file, t_plan) = (*j.times.last().unwrap(), *m.times.last().unwrap());
+        assert!((t_file - t_plan).abs() < 1e-6 * t_plan, "{t_file} vs {t_plan}");
+    }
+    // Without the speeds every vehicle flies at its cruise speed: no longer together.
+    let cruise = s.evaluate_paths(&file.mission_paths()).unwrap();
+    assert!(cruise.iter().all(|m| m.violations.iter().any(|v| v.kind == ViolationKind::Arrival)));
+    // A speed outside the range is bad input naming the segment.
+    let mut fast = file.speeds.clone();
+    fast[1].as_mut().unwrap()[2] = 3.0;
+    let e = s.evaluate_routes(&file.mission_paths(), &fast).unwrap_err().to_string();
+    assert!(e.contains("missions[1].speeds[2]") && e.contains("3 m/s is outside"), "{e}");
+}
+
+/// A graph search picks each edge's speed: with length and time to minimise and nothing to
+/// slow for, every edge is flown at the top of the range.
+#[test]
+fn a_graph_search_flies_each_edge_at_the_cheapest_speed() {
+    let text = include_str!("../data/fleet_together.toml")
+        .replace("speed = 1.5", "speed = 1.5\nspeed_min = 0.5\nspeed_max = 2.5")
+        .replace("arrival = \"together\"\narrival_tolerance_s = 60.0", "arrival = \"free\"");
+    let s = Scenario::from_toml(&text, "fleet_free.toml").unwrap();
+    let r = s.plan(&PlanRequest { planner: Some("astar".into()), ..PlanRequest::default() }, &mut |_| {}).unwrap();
+    for m in &r.missions {
+        let v = m.speeds.as_ref().unwrap();
+        assert!(v.iter().all(|&x| x == 2.5), "{}: {v:?}", m.name);
+        let x = m.metrics.unwrap();
+        assert!((x.travel_time_s - x.length_m / 2.5).abs() < 1e-6, "{x:?}");
+    }
+    recheck_plan(&s, &r).unwrap();
+}

@@ -19,7 +19,7 @@ fn recheck_track(s: &Scenario, sim: &Simulation) -> Result<usize, String> {
         let truth = sim.truth(&s.world, e);
         let m = &s.missions[0];
         samples +=
-            recheck_path(&truth, &m.vehicle, &s.settings, w, tt).map_err(|x| format!("track segment {i}: {x}"))?;
+            recheck_path(&truth, &m.vehicle, &s.settings, w, tt, &[]).map_err(|x| format!("track segment {i}: {x}"))?;
     }
     Ok(samples)
 }

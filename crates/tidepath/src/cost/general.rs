@@ -115,8 +115,8 @@ impl CostModel for GeneralCost {
     /// Length and time are additive: a valid motion costs w_length l / L0 + w_time dt / T0.
     /// The turn and pitch penalties are path-level (they depend on joints); planners that build
     /// paths edge by edge check them on the finished path, where the evaluation counts them.
-    fn motion_cost(&self, model: &PathModel<'_>, a: Vec3, b: Vec3, t0: f64) -> Option<(f64, f64)> {
-        let m = model.validator.motion(a, b, t0);
+    fn motion_cost_at(&self, model: &PathModel<'_>, a: Vec3, b: Vec3, t0: f64, v: f64) -> Option<(f64, f64)> {
+        let m = model.validator.motion_at(a, b, t0, v);
         if !m.valid() {
             return None;
         }

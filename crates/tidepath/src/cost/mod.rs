@@ -26,6 +26,54 @@ pub fn registry() -> Registry<BuildCost> {
     Registry::new("cost model", "cost.model", "tidepath planners", COST_MODELS)
 }
 
+/// The cheapest valid motion a -> b leaving at `t0` over the vehicle's
+/// [`crate::vehicle::Vehicle::speed_choices`]: (cost, arrival, speed). How graph and sampling
+/// planners choose a speed per edge; without a speed range it is
+/// [`CostModel::motion_cost`]. Ties go to the faster speed. A slower speed can be the only
+/// valid one (a moving obstacle passes first) or the cheaper one (a cost with an energy term).
+pub fn cheapest_motion(
+    cost: &dyn CostModel,
+    model: &PathModel<'_>,
+    a: Vec3,
+    b: Vec3,
+    t0: f64,
+) -> Option<(f64, f64, f64)> {
+    let mut best: Option<(f64, f64, f64)> = None;
+    for v in model.vehicle.speed_choices() {
+        if let Some((c, arrival)) = cost.motion_cost_at(model, a, b, t0, v) {
+            if best.is_none_or(|(bc, ..)| c < bc) {
+                best = Some((c, arrival, v));
+            }
+        }
+    }
+    best
+}
+
+/// The speeds [`cheapest_motion`] picks along `points` on the running clock, one per segment
+/// (the cruise speed where no speed gives a valid motion): the speeds an edge-by-edge search
+/// chose, since it priced each edge of its path the same way at the same departure time.
+/// `None` for a vehicle without a speed range.
+pub fn edge_speeds(cost: &dyn CostModel, model: &PathModel<'_>, points: &[Vec3]) -> Option<Vec<f64>> {
+    model.vehicle.speed_range?;
+    let mut t = model.departure_time;
+    let mut out = Vec::with_capacity(points.len().saturating_sub(1));
+    for w in points.windows(2) {
+        let v = match cheapest_motion(cost, model, w[0], w[1], t) {
+            Some((_, arrival, v)) => {
+                t = arrival;
+                v
+            }
+            None => {
+                let v = model.vehicle.speed;
+                t += model.validator.travel_time(w[0], w[1], t).0;
+                v
+            }
+        };
+        out.push(v);
+    }
+    Some(out)
+}
+
 /// The most terms any model may have; term buffers live on the stack.
 pub const MAX_TERMS: usize = 8;
 
@@ -40,11 +88,17 @@ pub trait CostModel: Send + Sync {
     /// mission (start, goal, vehicle, departure), so one model serves every mission.
     fn evaluate(&self, model: &PathModel<'_>, points: &[Vec3], scratch: &mut Scratch, terms: &mut [f64]) -> f64;
 
-    /// The cost of one motion a -> b leaving at `t0` for the model's additive terms, so graph
-    /// and sampling planners that build paths edge by edge accumulate what the evaluation
-    /// reports; `None` when the motion is invalid. Path-level terms (turn and pitch penalties
-    /// at joints, normalisation constants) are the model's to document.
-    fn motion_cost(&self, model: &PathModel<'_>, a: Vec3, b: Vec3, t0: f64) -> Option<(f64, f64)>;
+    /// The cost of one motion a -> b leaving at `t0` at through-water speed `v`, for the
+    /// model's additive terms, and the arrival time, so graph and sampling planners that build
+    /// paths edge by edge accumulate what the evaluation reports; `None` when the motion is
+    /// invalid. Path-level terms (turn and pitch penalties at joints, normalisation constants)
+    /// are the model's to document.
+    fn motion_cost_at(&self, model: &PathModel<'_>, a: Vec3, b: Vec3, t0: f64, v: f64) -> Option<(f64, f64)>;
+
+    /// [`CostModel::motion_cost_at`] at the vehicle's cruise speed.
+    fn motion_cost(&self, model: &PathModel<'_>, a: Vec3, b: Vec3, t0: f64) -> Option<(f64, f64)> {
+        self.motion_cost_at(model, a, b, t0, model.vehicle.speed)
+    }
 
     /// The terms `motion_cost` accumulates (the rest are path-level: they depend on joints or
     /// on the whole path), for the reasons plans give.

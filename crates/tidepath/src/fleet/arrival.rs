@@ -73,11 +73,16 @@ pub fn check_arrivals(rule: &Arrival, arrivals: &[(usize, f64)]) -> Option<Arriv
 }
 
 /// The joint objective's penalty for broken arrivals: the separation penalty's 10, plus as
-/// much again times the excess over a minute (capped at that), so optimizers are led to
-/// arrivals that keep the rule.
+/// much again for every [`ARRIVAL_PENALTY_SCALE_S`] of excess. Unbounded and linear, so an
+/// optimizer is led toward the rule from any spread: an hour apart costs more than half an
+/// hour, and shortening the spread by a second is worth more than the time term's loss when a
+/// vehicle slows down by that second (its weight per second is 1 / the straight time, hours).
 pub fn arrival_penalty(check: &ArrivalCheck) -> f64 {
     if check.broken.is_none() {
         return 0.0;
     }
-    super::SEPARATION_PENALTY * (1.0 + (check.excess_s / 60.0).min(1.0))
+    super::SEPARATION_PENALTY * (1.0 + check.excess_s / ARRIVAL_PENALTY_SCALE_S)
 }
+
+/// Excess arrival time (s) that costs as much as one violation: ten minutes.
+pub const ARRIVAL_PENALTY_SCALE_S: f64 = 600.0;

@@ -12,30 +12,36 @@ pub type Leg = (Vec3, Vec3, f64, f64);
 pub fn timed_legs(model: &PathModel<'_>, points: &[Vec3], out: &mut Vec<Leg>) {
     out.clear();
     let v = &model.validator;
-    let fly = |a: Vec3, b: Vec3, t0: f64, out: &mut Vec<Leg>| -> f64 {
-        let (t1, _) = v.for_each_piece(a, b, t0, |pc| {
+    let fly = |a: Vec3, b: Vec3, t0: f64, speed: f64, out: &mut Vec<Leg>| -> f64 {
+        let (t1, _) = v.for_each_piece_at(a, b, t0, speed, |pc| {
             if pc.t1.is_finite() && pc.t0.is_finite() {
                 out.push((pc.p0, pc.p1, pc.t0, pc.t1));
             }
         });
         t1
     };
-    match model.flown(points) {
-        Some(curve) => {
-            for (w, t) in curve.points.windows(2).zip(&curve.times) {
-                if !t.is_finite() {
-                    return;
-                }
-                fly(w[0], w[1], *t, out);
-            }
+    match model.turn_radius() {
+        Some(r) => {
+            let mut stopped = false;
+            model.walk_flown(
+                points,
+                r,
+                |m, _, t0, _| {
+                    stopped |= !t0.is_finite();
+                    if !stopped && m.a != m.b {
+                        fly(m.a, m.b, t0, model.motion_speed(m), out);
+                    }
+                },
+                |_, _, _| {},
+            );
         }
         None => {
             let mut t = model.departure_time;
-            for w in points.windows(2) {
+            for (i, w) in points.windows(2).enumerate() {
                 if !t.is_finite() {
                     return;
                 }
-                t = fly(w[0], w[1], t, out);
+                t = fly(w[0], w[1], t, model.segment_speed(i), out);
             }
         }
     }

@@ -181,6 +181,13 @@ pub fn check<P: AsRef<[Vec3]>>(
             timed_legs(&models[i], path, &mut legs[i]);
         }
     }
+    check_legs(&legs[..n], rules)
+}
+
+/// [`check`] on legs already flown: `legs[i]` is vehicle i's timed path
+/// ([`timed_legs`]; empty when it has none).
+pub fn check_legs(legs: &[Vec<Leg>], rules: &FleetRules) -> FleetCheck {
+    let n = legs.len();
     let mut out = FleetCheck::default();
     // Arrivals, without allocating: at most a handful of missions, checked in place.
     if rules.arrival != Arrival::Free {

@@ -105,7 +105,11 @@ fn the_closest_approach_agrees_with_dense_sampling_in_currents() {
         let departs = [0.0, rng.random_range(0.0..200.0)];
         let missions: Vec<Mission> =
             (0..2).map(|k| Mission::new("m", veh.clone(), paths[k][0], paths[k][3], departs[k])).collect();
-        let models: Vec<PathModel<'_>> = missions.iter().map(|m| PathModel::new(&world, m, &settings)).collect();
+        let bases: Vec<PathModel<'_>> = missions.iter().map(|m| PathModel::new(&world, m, &settings)).collect();
+        // Every other case, each segment at its own speed (a plan over a speed range).
+        let speeds: Vec<Vec<f64>> = (0..2).map(|_| (0..3).map(|_| rng.random_range(1.0..2.5)).collect()).collect();
+        let models: Vec<PathModel<'_>> =
+            (0..2).map(|k| bases[k].with_speeds((case % 2 == 1).then_some(&speeds[k][..]))).collect();
         let mut legs = [Vec::new(), Vec::new()];
         for k in 0..2 {
             timed_legs(&models[k], &paths[k], &mut legs[k]);
@@ -139,7 +143,8 @@ fn arrivals_together_and_in_order() {
     assert_eq!((together.spread_s, together.first, together.last), (90.0, (0, 1000.0), (1, 1090.0)));
     assert_eq!(together.excess_s, 30.0);
     assert_eq!(together.broken, Some(Broken::Spread { tolerance_s: 60.0 }));
-    assert_eq!(arrival_penalty(&together), SEPARATION_PENALTY * 1.5);
+    // 30 s over: the penalty plus 30 / 600 of it.
+    assert_eq!(arrival_penalty(&together), SEPARATION_PENALTY * (1.0 + 30.0 / 600.0));
     let loose = check_arrivals(&Arrival::Together { tolerance_s: 90.0 }, &arrivals).unwrap();
     assert!(loose.broken.is_none() && arrival_penalty(&loose) == 0.0);
     // Order 0, 1, 2: 2 arrives 60 s before 1.

@@ -78,11 +78,11 @@ impl PathModel<'_> {
         times.clear();
         let mut t = self.departure_time;
         times.push(t);
-        for w in points.windows(2) {
+        for (i, w) in points.windows(2).enumerate() {
             let (a, b) = (w[0], w[1]);
             let dir = b - a;
             out.length += dir.length();
-            let m = validator.motion(a, b, t);
+            let m = validator.motion_at(a, b, t, self.segment_speed(i));
             out.collisions += m.collisions;
             out.current_blocked += m.blocked;
             out.current_gaps += m.gaps;

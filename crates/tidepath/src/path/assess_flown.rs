@@ -172,7 +172,7 @@ impl PathModel<'_> {
                     }
                     None => format!("segment {}", m.segment),
                 };
-                let (kind, text) = motion_issue_text(self, issue, &place, m.a, m.b, t0);
+                let (kind, text) = motion_issue_text(self, issue, &place, (m.a, m.b, t0, self.motion_speed(m)));
                 issues.borrow_mut().push(Violation { kind, index: m.segment, message: text });
             },
         );

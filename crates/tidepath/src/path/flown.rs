@@ -49,7 +49,7 @@ impl PathModel<'_> {
     /// each motion, its check, and the times it is entered and left (the clock of the next);
     /// `on_issue` gets every issue of every motion, for the violation list. Returns the
     /// arrival time.
-    pub(super) fn walk_flown(
+    pub fn walk_flown(
         &self,
         points: &[Vec3],
         r: f64,
@@ -61,7 +61,8 @@ impl PathModel<'_> {
         let mut t = self.departure_time;
         let mut fly = |m: FlownMotion, scale: f64, t: &mut f64| {
             let t0 = *t;
-            let check = validator.motion_with(m.a, m.b, t0, |issue| on_issue(&m, t0, issue));
+            let v = self.motion_speed(&m);
+            let check = validator.motion_with_at(m.a, m.b, t0, v, |issue| on_issue(&m, t0, issue));
             *t = t0 + (check.arrival - t0) * scale;
             f(&m, &check, t0, *t);
         };
@@ -85,6 +86,16 @@ impl PathModel<'_> {
             }
         });
         t
+    }
+
+    /// The through-water speed a flown motion is flown at: its leg's, and on a turn the
+    /// incoming leg's for the first half of the chords and the outgoing leg's after (the speed
+    /// changes where the vehicle is closest to the waypoint).
+    pub fn motion_speed(&self, m: &FlownMotion) -> f64 {
+        match m.turn {
+            Some((_, c, k)) if 2 * c >= k => self.segment_speed(m.segment + 1),
+            _ => self.segment_speed(m.segment),
+        }
     }
 
     /// How many pieces of current integration judging `points` takes (the motions' pieces; a

@@ -22,6 +22,7 @@ fn vehicle(radius: Option<f64>) -> Vehicle {
         depth_max: 100.0,
         safety_distance: 1.0,
         turn_radius: radius,
+        speed_range: None,
     }
 }
 

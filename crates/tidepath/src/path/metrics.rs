@@ -57,11 +57,16 @@ impl PathModel<'_> {
         let mut best = f64::INFINITY;
         if let Some(r) = self.turn_radius() {
             let v = &self.validator;
-            self.walk_flown(points, r, |m, _, t0, _| best = best.min(v.motion_clearance(m.a, m.b, t0)), |_, _, _| {});
+            self.walk_flown(
+                points,
+                r,
+                |m, _, t0, _| best = best.min(v.motion_clearance_at(m.a, m.b, t0, self.motion_speed(m))),
+                |_, _, _| {},
+            );
             return best.is_finite().then_some(best);
         }
         for (i, w) in points.windows(2).enumerate() {
-            best = best.min(self.validator.motion_clearance(w[0], w[1], times[i]));
+            best = best.min(self.validator.motion_clearance_at(w[0], w[1], times[i], self.segment_speed(i)));
         }
         best.is_finite().then_some(best)
     }

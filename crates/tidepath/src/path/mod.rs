@@ -8,12 +8,14 @@ mod assess;
 mod assess_flown;
 mod flown;
 mod metrics;
+mod speeds;
 mod violations;
 
 pub use crate::validity::{ModelSettings, TravelModel};
 pub use assess::Assessment;
 pub use flown::{Flown, FlownMotion};
 pub use metrics::Metrics;
+pub use speeds::resample_speeds;
 pub use violations::{Violation, ViolationKind};
 
 use crate::geom::Vec3;
@@ -33,6 +35,10 @@ pub struct PathModel<'a> {
     pub goal: Vec3,
     /// State and motion checks; the same the planners use.
     pub validator: Validator<'a>,
+    /// The through-water speed of each segment of the path judged, when the plan chose them
+    /// (a vehicle with a speed range); `None` flies every segment at the cruise speed. A path
+    /// with more segments than speeds flies the extra ones at the last speed given.
+    pub speeds: Option<&'a [f64]>,
 }
 
 impl<'a> PathModel<'a> {
@@ -45,6 +51,23 @@ impl<'a> PathModel<'a> {
             start: mission.start,
             goal: mission.goal,
             validator: Validator::new(world, &mission.vehicle, settings),
+            speeds: None,
+        }
+    }
+
+    /// This model judging paths whose segments are flown at `speeds` (`None`: at the cruise
+    /// speed). A copy of references: no allocation, so an optimizer can make one per
+    /// evaluation.
+    pub fn with_speeds<'b>(&'b self, speeds: Option<&'b [f64]>) -> PathModel<'b> {
+        PathModel { validator: self.validator.clone(), speeds, ..*self }
+    }
+
+    /// The through-water speed segment `i` is flown at.
+    #[inline]
+    pub fn segment_speed(&self, i: usize) -> f64 {
+        match self.speeds {
+            Some(s) if !s.is_empty() => s[i.min(s.len() - 1)],
+            _ => self.vehicle.speed,
         }
     }
 
@@ -60,8 +83,9 @@ impl<'a> PathModel<'a> {
         let mut t = self.departure_time;
         times.push(t);
         let mut blocked = 0;
-        for w in points.windows(2) {
-            let (dt, b) = self.validator.travel_time(w[0], w[1], t);
+        for (i, w) in points.windows(2).enumerate() {
+            let (t1, b) = self.validator.for_each_piece_at(w[0], w[1], t, self.segment_speed(i), |_| {});
+            let dt = t1 - t;
             t += dt;
             blocked += b;
             times.push(t);
@@ -69,9 +93,11 @@ impl<'a> PathModel<'a> {
         blocked
     }
 
-    /// Time to traverse a -> b leaving at `t0`, and the number of impossible pieces.
-    pub fn segment_time(&self, a: Vec3, b: Vec3, t0: f64) -> (f64, u32) {
-        self.validator.travel_time(a, b, t0)
+    /// Time to traverse a -> b (segment `i` of a path) leaving at `t0`, and the number of
+    /// impossible pieces.
+    pub fn segment_time(&self, i: usize, a: Vec3, b: Vec3, t0: f64) -> (f64, u32) {
+        let (t1, blocked) = self.validator.for_each_piece_at(a, b, t0, self.segment_speed(i), |_| {});
+        (t1 - t0, blocked)
     }
 
     /// Tolerance for "the path starts at the start and ends at the goal": 1e-9 of the domain.

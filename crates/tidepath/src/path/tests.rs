@@ -21,6 +21,7 @@ fn vehicle() -> Vehicle {
         depth_max: 100.0,
         safety_distance: 1.0,
         turn_radius: None,
+        speed_range: None,
     }
 }
 
@@ -156,4 +157,54 @@ fn general_cost_terms_by_hand() {
         assert!((got - want).abs() < 1e-9, "{name}: {got} vs {want}");
     }
     assert!((total - expect.iter().sum::<f64>()).abs() < 1e-12);
+}
+
+/// A plan's segment speeds set its clock: 30 m at 1 m/s then 40 m at 4 m/s take 30 + 10 s,
+/// the time term follows (T0 = 50 m at the cruise 2 m/s = 25 s), and a moving obstacle met at
+/// cruise speed is missed at another.
+#[test]
+fn segment_speeds_set_the_clock_the_cost_and_the_encounters() {
+    use crate::cost::{CostModel, GeneralCost, GeneralWeights};
+    let w = world();
+    let v = Vehicle { speed_range: Some((1.0, 4.0)), ..vehicle() };
+    let s = ModelSettings::default();
+    let p = [Vec3::new(10.0, 10.0, -50.0), Vec3::new(40.0, 10.0, -50.0), Vec3::new(40.0, 50.0, -50.0)];
+    let mission = Mission::new("m", v, p[0], p[2], 0.0);
+    let base = PathModel::new(&w, &mission, &s);
+    let speeds = [1.0, 4.0];
+    let m = base.with_speeds(Some(&speeds));
+    let mut times = Vec::new();
+    let a = m.assess(&p, &mut times);
+    assert_eq!(times, vec![0.0, 30.0, 40.0]);
+    assert_eq!(a.travel_time, 40.0);
+    assert_eq!((m.segment_speed(0), m.segment_speed(1), m.segment_speed(7)), (1.0, 4.0, 4.0));
+    let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
+    let (_, terms) = cost.breakdown(&m, &p);
+    assert!((terms[1].1 - 40.0 / 25.0).abs() < 1e-12, "{terms:?}");
+    // At cruise speed the same path takes 15 + 20 s.
+    base.assess(&p, &mut times);
+    assert_eq!(times, vec![0.0, 15.0, 35.0]);
+
+    // A sphere crossing the first segment's x = 25 at t = 7.5 s (when a 2 m/s vehicle is there)
+    // hits at cruise speed; at 1 m/s the vehicle reaches x = 25 at t = 15 s, long after.
+    let mut w = world();
+    w.obstacles.push(Obstacle {
+        shape: Shape::Sphere { center: Vec3::new(25.0, 17.5, -50.0), radius: 2.0 },
+        velocity: Vec3::new(0.0, -1.0, 0.0),
+        window: None,
+    });
+    let base = PathModel::new(&w, &mission, &s);
+    assert_eq!(base.assess(&p, &mut times).collisions, 1);
+    assert_eq!(base.with_speeds(Some(&speeds)).assess(&p, &mut times).collisions, 0);
+    assert!(base.violations(&p).iter().any(|x| x.kind == ViolationKind::Obstacle));
+    assert!(!base.with_speeds(Some(&speeds)).violations(&p).iter().any(|x| x.kind == ViolationKind::Obstacle));
+    // The edge-by-edge choice: at the fastest level (4 m/s) the vehicle passes ahead of the
+    // sphere (closest at t = 135/34 s, 1.64 m from its surface, outside the 1 m safety):
+    // valid and cheapest, so chosen; at cruise speed the motion is invalid.
+    let (_, arrival, speed) = crate::cost::cheapest_motion(&cost, &base, p[0], p[1], 0.0).unwrap();
+    assert_eq!((speed, arrival), (4.0, 7.5));
+    assert!(cost.motion_cost(&base, p[0], p[1], 0.0).is_none());
+    // Without a range the only choice is the cruise speed, here invalid.
+    let fixed = Mission::new("m", vehicle(), p[0], p[2], 0.0);
+    assert!(crate::cost::cheapest_motion(&cost, &PathModel::new(&w, &fixed, &s), p[0], p[1], 0.0).is_none());
 }

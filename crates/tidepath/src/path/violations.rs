@@ -116,9 +116,10 @@ impl PathModel<'_> {
             let (a, b) = (w[0], w[1]);
             let dir = b - a;
             let mut issues = Vec::new();
-            let m = validator.motion_with(a, b, t, |issue| issues.push(issue));
+            let v = self.segment_speed(i);
+            let m = validator.motion_with_at(a, b, t, v, |issue| issues.push(issue));
             for issue in issues {
-                let (kind, text) = motion_issue_text(self, issue, &format!("segment {i}"), a, b, t);
+                let (kind, text) = motion_issue_text(self, issue, &format!("segment {i}"), (a, b, t, v));
                 push(kind, i, text);
             }
             t = m.arrival;
@@ -158,15 +159,13 @@ fn joint_turn(veh: &crate::vehicle::Vehicle, i: usize, before: (Vec2, f64), afte
     })
 }
 
-/// The violation kind and message of one motion issue of the motion a -> b leaving at `t0`;
-/// `place` names it ("segment 3", "the turn at waypoint 4").
+/// The violation kind and message of one motion issue of the motion a -> b leaving at `t`
+/// at through-water speed `v`; `place` names it ("segment 3", "the turn at waypoint 4").
 pub(super) fn motion_issue_text(
     model: &PathModel<'_>,
     issue: MotionIssue,
     place: &str,
-    a: Vec3,
-    b: Vec3,
-    t: f64,
+    (a, b, t, v): (Vec3, Vec3, f64, f64),
 ) -> (ViolationKind, String) {
     let world = model.world;
     let veh = model.vehicle;
@@ -187,15 +186,12 @@ pub(super) fn motion_issue_text(
             (ViolationKind::Terrain, text)
         }
         MotionIssue::Obstacle(k) => {
-            let c = obstacle_clearance(model, k, a, b, t);
+            let c = obstacle_clearance(model, k, (a, b, t, v));
             (ViolationKind::Obstacle, format!("{place} passes {c:.2} m from obstacle {k} (safety distance {safety} m)"))
         }
         MotionIssue::Current { pieces } => (
             ViolationKind::Current,
-            format!(
-                "{place}: the current stops a {} m/s vehicle from holding the track on {pieces} piece(s)",
-                veh.speed
-            ),
+            format!("{place}: the current stops a {v} m/s vehicle from holding the track on {pieces} piece(s)"),
         ),
         MotionIssue::NoCurrentData => {
             let at = world.current.first_gap_on(a, b).map(|p| world.place(p.x, p.y)).unwrap_or_default();
@@ -207,10 +203,13 @@ pub(super) fn motion_issue_text(
     }
 }
 
-/// Clearance of segment a -> b (leaving at `t0`) to obstacle `k`, on the validator's clock.
-fn obstacle_clearance(model: &PathModel<'_>, k: usize, a: Vec3, b: Vec3, t0: f64) -> f64 {
+/// Clearance of segment a -> b (leaving at `t0` at speed `v`) to obstacle `k`, on the
+/// validator's clock.
+fn obstacle_clearance(model: &PathModel<'_>, k: usize, (a, b, t0, v): (Vec3, Vec3, f64, f64)) -> f64 {
     let o = &model.world.obstacles[k];
     let mut best = f64::INFINITY;
-    model.validator.for_each_piece(a, b, t0, |pc| best = best.min(o.segment_clearance(pc.p0, pc.p1, pc.t0, pc.t1)));
+    model
+        .validator
+        .for_each_piece_at(a, b, t0, v, |pc| best = best.min(o.segment_clearance(pc.p0, pc.p1, pc.t0, pc.t1)));
     best
 }

@@ -14,7 +14,10 @@ pub fn judge_fleet(models: &[PathModel<'_>], missions: &mut [MissionPlan], rules
         return None;
     }
     let paths: Vec<&[Vec3]> = missions.iter().map(|m| m.path()).collect();
-    let check = fleet::check(models, &paths, rules, &mut Vec::new());
+    // Each vehicle flies its plan's own segment speeds.
+    let sped: Vec<PathModel<'_>> =
+        models.iter().zip(missions.iter()).map(|(m, p)| m.with_speeds(p.speeds.as_deref())).collect();
+    let check = fleet::check(&sped, &paths, rules, &mut Vec::new());
     for c in &check.conflicts {
         let x = &c.approach;
         let message = format!(

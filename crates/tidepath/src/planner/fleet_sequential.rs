@@ -126,7 +126,8 @@ pub(super) fn solve_sequential(
             for &j in &order[..rank] {
                 if let Some(m) = &results[j] {
                     let safety = problem.missions[k].vehicle.safety_distance;
-                    world.obstacles.extend(traffic(&models[j], m.path(), problem.fleet, j, k, safety, world.dims));
+                    let flown = models[j].with_speeds(m.speeds.as_deref());
+                    world.obstacles.extend(traffic(&flown, m.path(), problem.fleet, j, k, safety, world.dims));
                 }
             }
             let one = [problem.missions[k].clone()];
@@ -163,7 +164,7 @@ pub(super) fn solve_sequential(
         let name = &problem.missions[i].name;
         missions.push(match r {
             Some(m) if m.status.is_success() => {
-                let mut j = judge(&models[i], problem.cost, m.path(), name);
+                let mut j = judge(&models[i].with_speeds(m.speeds.as_deref()), problem.cost, m.path(), name);
                 if m.smoothed.is_some() {
                     (j.waypoints, j.smoothed, j.raw_cost) = (m.waypoints.clone(), m.smoothed.clone(), m.raw_cost);
                 }

@@ -233,7 +233,7 @@ impl Planner for GridSearch {
         } else {
             no_route.iter().any(Option::is_some).then_some(Claim::NoRoute(no_route))
         };
-        PlannerOutput { paths, claim, stats, graphs: Vec::new() }
+        PlannerOutput { paths, speeds: Vec::new(), claim, stats, graphs: Vec::new() }
     }
 }
 

@@ -192,6 +192,7 @@ impl Planner for Hybrid {
         let Some(base) = objective.encode(&seeds_pts) else {
             return PlannerOutput {
                 paths: refs,
+                speeds: Vec::new(),
                 claim,
                 stats: SearchStats { expansions, ..SearchStats::default() },
                 graphs: Vec::new(),
@@ -216,14 +217,24 @@ impl Planner for Hybrid {
         };
         // Every seed is a starting point: the population is the reference's neighbourhood.
         let r = optim::run(&mut de, &objective, &t, rng, options.parallel, &seeds, observer);
-        let paths = if r.best_x.len() == objective.dim() { objective.decode(&r.best_x) } else { seeds_pts };
-        let paths = paths
-            .iter()
-            .enumerate()
-            .map(|(i, p)| self.smoother.smooth(&problem.path_model(i), problem.cost, p, termination))
-            .collect();
+        let (raw, speeds) = if r.best_x.len() == objective.dim() {
+            (objective.decode(&r.best_x), objective.decode_speeds(&r.best_x))
+        } else {
+            (seeds_pts, Vec::new())
+        };
+        let mut paths = Vec::with_capacity(raw.len());
+        let mut smoothed_speeds = Vec::with_capacity(raw.len());
+        for (i, p) in raw.iter().enumerate() {
+            let given = speeds.get(i).cloned().flatten();
+            let base = problem.path_model(i);
+            let model = base.with_speeds(given.as_deref());
+            let s = self.smoother.smooth(&model, problem.cost, p, termination);
+            smoothed_speeds.push(given.map(|v| crate::path::resample_speeds(p, &v, &s)));
+            paths.push(s);
+        }
         PlannerOutput {
             paths,
+            speeds: smoothed_speeds,
             claim,
             stats: SearchStats {
                 iterations: r.iterations,

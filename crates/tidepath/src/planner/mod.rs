@@ -136,6 +136,11 @@ impl Default for SearchStats {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PlannerOutput {
     pub paths: Vec<Vec<Vec3>>,
+    /// Each path's segment speeds, when the planner chose them (an optimizer over a vehicle
+    /// with a speed range); empty, or `None` for a path, lets [`solve`] give each segment the
+    /// cheapest of the vehicle's speed levels on the running clock
+    /// ([`crate::cost::edge_speeds`]), the choice edge-by-edge searches make while searching.
+    pub speeds: Vec<Option<Vec<f64>>>,
     pub claim: Option<Claim>,
     pub stats: SearchStats,
     /// The tree or roadmap of each mission, when [`RunOptions::record_graph`] asked for it and

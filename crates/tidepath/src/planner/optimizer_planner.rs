@@ -89,6 +89,7 @@ impl Planner for OptimizerPlanner {
         let Ok(encodings) = self.encodings(problem) else {
             return PlannerOutput {
                 paths: vec![Vec::new(); problem.missions.len()],
+                speeds: Vec::new(),
                 claim: None,
                 stats: SearchStats::default(),
                 graphs: Vec::new(),
@@ -99,14 +100,15 @@ impl Planner for OptimizerPlanner {
         let r = optim::run(self.optimizer.as_mut(), &objective, termination, rng, options.parallel, &seeds, observer);
         let segments = (self.encoding.waypoints as u64 + 1) * problem.missions.len() as u64;
         // No best point when no evaluation gave a number (all NaN): no path, status infeasible.
-        let paths = if r.best_x.len() == objective.dim() {
-            objective.decode(&r.best_x)
+        let (paths, speeds) = if r.best_x.len() == objective.dim() {
+            (objective.decode(&r.best_x), objective.decode_speeds(&r.best_x))
         } else {
-            vec![Vec::new(); problem.missions.len()]
+            (vec![Vec::new(); problem.missions.len()], Vec::new())
         };
         let claim = self.sliced_hint(problem, &paths, termination);
         PlannerOutput {
             paths,
+            speeds,
             claim,
             stats: SearchStats {
                 iterations: r.iterations,

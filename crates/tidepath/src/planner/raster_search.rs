@@ -136,7 +136,7 @@ impl<'a> RasterSearch<'a> {
             start_point: m.start,
             goal_point: m.goal,
             departure: m.departure_time,
-            best_speed: m.vehicle.speed + hint,
+            best_speed: m.vehicle.max_speed() + hint,
             admissible: bound.is_some(),
             tan_pitch: m.vehicle.max_pitch.tan(),
         }))
@@ -162,7 +162,8 @@ impl<'a> RasterSearch<'a> {
             return None;
         }
         match self.objective {
-            Objective::Cost => self.cost.motion_cost(&self.model, pa, pb, t0),
+            // With a speed range, the cheapest of the vehicle's speed levels for this edge.
+            Objective::Cost => crate::cost::cheapest_motion(self.cost, &self.model, pa, pb, t0).map(|(c, t, _)| (c, t)),
             Objective::Length | Objective::Time => {
                 let check = self.model.validator.motion(pa, pb, t0);
                 if !check.valid() {

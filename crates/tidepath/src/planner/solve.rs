@@ -35,6 +35,9 @@ pub struct MissionPlan {
     /// Arrival time at each point of the final path (s on the scenario clock); with a turning
     /// radius, at an interior waypoint the time halfway round its turn.
     pub times: Vec<f64>,
+    /// The through-water speed of each segment of the final path (m/s), for a vehicle with a
+    /// speed range; `None` when every segment is flown at the cruise speed.
+    pub speeds: Option<Vec<f64>>,
     /// With a turning radius: the curve the vehicle flies along the final path (fillets at
     /// its waypoints), sampled where the evaluation checked it, with arrival times.
     pub flown: Option<Flown>,
@@ -79,6 +82,7 @@ impl MissionPlan {
             smoothed: None,
             raw_cost: None,
             times: Vec::new(),
+            speeds: None,
             flown: None,
             cost: f64::INFINITY,
             terms: Vec::new(),
@@ -114,7 +118,8 @@ impl Plan {
     }
 }
 
-/// Cost, terms, violations, metrics and arrival times of one path of one mission.
+/// Cost, terms, violations, metrics and arrival times of one path of one mission, flown at
+/// `model`'s segment speeds.
 pub fn judge(model: &PathModel<'_>, cost: &dyn crate::cost::CostModel, points: &[Vec3], name: &str) -> MissionPlan {
     let (total, terms) = cost.breakdown(model, points);
     let violations = model.violations(points);
@@ -126,6 +131,7 @@ pub fn judge(model: &PathModel<'_>, cost: &dyn crate::cost::CostModel, points: &
         smoothed: None,
         raw_cost: None,
         times,
+        speeds: model.speeds.map(|_| (0..points.len().saturating_sub(1)).map(|i| model.segment_speed(i)).collect()),
         flown: model.flown(points),
         cost: total,
         terms,
@@ -228,7 +234,13 @@ pub fn solve(
             if raw.len() < 2 {
                 continue;
             }
-            let model = &models[i];
+            // The planner's speeds, else the cheapest speed level per segment (vehicles with a
+            // speed range only).
+            let speeds = match out.speeds.get_mut(k).and_then(Option::take) {
+                Some(s) if m.vehicle.speed_range.is_some() => Some(s),
+                _ => crate::cost::edge_speeds(problem.cost, &models[i], &raw),
+            };
+            let model = &models[i].with_speeds(speeds.as_deref());
             missions[i] = match options.smoother {
                 None => judge(model, problem.cost, &raw, &m.name),
                 Some(s) => {
@@ -238,6 +250,9 @@ pub fn solve(
                         out.stats.stop_reason = r;
                     }
                     let raw_cost = problem.cost.breakdown(model, &raw).0;
+                    // The speeds follow the route onto the smoothed path.
+                    let moved = speeds.as_deref().map(|v| crate::path::resample_speeds(&raw, v, &smoothed));
+                    let model = &models[i].with_speeds(moved.as_deref());
                     let mut j = judge(model, problem.cost, &smoothed, &m.name);
                     j.waypoints = raw;
                     j.smoothed = Some(smoothed);

@@ -212,6 +212,6 @@ impl Planner for Visibility {
             objective: if per_metre { "the scenario's cost model".into() } else { "length".into() },
             scenario_cost: per_metre,
         });
-        PlannerOutput { paths, claim, stats, graphs: Vec::new() }
+        PlannerOutput { paths, speeds: Vec::new(), claim, stats, graphs: Vec::new() }
     }
 }

@@ -130,13 +130,14 @@ pub struct Validator<'a> {
     pub world: &'a World,
     pub vehicle: &'a Vehicle,
     pub settings: &'a ModelSettings,
-    /// Which fixed obstacles each segment needs testing against; built once.
-    obstacles: ObstacleIndex,
+    /// Which fixed obstacles each segment needs testing against; built once and shared, so a
+    /// copy of the validator (a path model given per-segment speeds) costs no allocation.
+    obstacles: std::sync::Arc<ObstacleIndex>,
 }
 
 impl<'a> Validator<'a> {
     pub fn new(world: &'a World, vehicle: &'a Vehicle, settings: &'a ModelSettings) -> Self {
-        let obstacles = ObstacleIndex::new(world, vehicle.safety_distance);
+        let obstacles = std::sync::Arc::new(ObstacleIndex::new(world, vehicle.safety_distance));
         Self { world, vehicle, settings, obstacles }
     }
 
@@ -225,16 +226,22 @@ impl<'a> Validator<'a> {
         }
     }
 
-    /// Flies a -> b leaving at `t0` in pieces of constant ground speed, calling `f` for each, and
-    /// returns the arrival time and the number of pieces the current makes impossible (flown at
-    /// [`MIN_SPEED_FRACTION`] of the vehicle speed so the clock stays finite).
+    /// [`Validator::for_each_piece_at`] at the vehicle's cruise speed.
+    #[inline]
+    pub fn for_each_piece(&self, a: Vec3, b: Vec3, t0: f64, f: impl FnMut(Piece)) -> (f64, u32) {
+        self.for_each_piece_at(a, b, t0, self.vehicle.speed, f)
+    }
+
+    /// Flies a -> b leaving at `t0` at through-water speed `v` in pieces of constant ground
+    /// speed, calling `f` for each, and returns the arrival time and the number of pieces the
+    /// current makes impossible (flown at [`MIN_SPEED_FRACTION`] of `v` so the clock stays
+    /// finite).
     ///
     /// Crab model: one piece in still water or a uniform current, else pieces of at most
     /// `current_step` metres, each at the ground speed for the current at its midpoint when the
     /// vehicle enters it. Vector-sum model: one piece at the model's mean speed.
     #[inline]
-    pub fn for_each_piece(&self, a: Vec3, b: Vec3, t0: f64, mut f: impl FnMut(Piece)) -> (f64, u32) {
-        let v = self.vehicle.speed;
+    pub fn for_each_piece_at(&self, a: Vec3, b: Vec3, t0: f64, v: f64, mut f: impl FnMut(Piece)) -> (f64, u32) {
         let len = a.distance(b);
         if len == 0.0 {
             f(Piece { p0: a, p1: b, t0, t1: t0 });
@@ -299,15 +306,35 @@ impl<'a> Validator<'a> {
         (t1 - t0, blocked)
     }
 
-    /// Judges the motion a -> b leaving at `t0`; see [`Validator::motion_with`].
+    /// Judges the motion a -> b leaving at `t0` at cruise speed; see [`Validator::motion_with_at`].
     #[inline]
     pub fn motion(&self, a: Vec3, b: Vec3, t0: f64) -> MotionCheck {
-        self.motion_with(a, b, t0, |_| {})
+        self.motion_with_at(a, b, t0, self.vehicle.speed, |_| {})
     }
 
-    /// Judges the motion a -> b leaving at `t0` and calls `on_issue` for every issue: the
-    /// seabed once, each obstacle once, the current once. Allocation-free.
-    pub fn motion_with(&self, a: Vec3, b: Vec3, t0: f64, mut on_issue: impl FnMut(MotionIssue)) -> MotionCheck {
+    /// Judges the motion a -> b leaving at `t0` at through-water speed `v`.
+    #[inline]
+    pub fn motion_at(&self, a: Vec3, b: Vec3, t0: f64, v: f64) -> MotionCheck {
+        self.motion_with_at(a, b, t0, v, |_| {})
+    }
+
+    /// [`Validator::motion_with_at`] at cruise speed.
+    #[inline]
+    pub fn motion_with(&self, a: Vec3, b: Vec3, t0: f64, on_issue: impl FnMut(MotionIssue)) -> MotionCheck {
+        self.motion_with_at(a, b, t0, self.vehicle.speed, on_issue)
+    }
+
+    /// Judges the motion a -> b leaving at `t0` at through-water speed `v` and calls
+    /// `on_issue` for every issue: the seabed once, each obstacle once, the current once.
+    /// Allocation-free.
+    pub fn motion_with_at(
+        &self,
+        a: Vec3,
+        b: Vec3,
+        t0: f64,
+        v: f64,
+        mut on_issue: impl FnMut(MotionIssue),
+    ) -> MotionCheck {
         let world = self.world;
         let safety = self.vehicle.safety_distance;
         let mut out = MotionCheck { arrival: t0, ..MotionCheck::default() };
@@ -328,12 +355,12 @@ impl<'a> Validator<'a> {
         });
         let moving = self.obstacles.moving();
         let (arrival, blocked) = if moving.is_empty() {
-            self.for_each_piece(a, b, t0, |_| {})
+            self.for_each_piece_at(a, b, t0, v, |_| {})
         } else {
             // The clock first; then a box test over the whole motion clears most moving
             // obstacles at once, and only if one remains are the pieces walked again (the
             // same pieces, at the same times) to test those piece by piece.
-            let (arrival, blocked) = self.for_each_piece(a, b, t0, |_| {});
+            let (arrival, blocked) = self.for_each_piece_at(a, b, t0, v, |_| {});
             let (lo, hi) = (a.min(b) - Vec3::splat(safety), a.max(b) + Vec3::splat(safety));
             // Bit j set: moving obstacle j cannot come near (tracked ones only).
             let mut clear = [0u64; MAX_TRACKED_MOVING / 64];
@@ -346,7 +373,7 @@ impl<'a> Validator<'a> {
                 }
             }
             if near {
-                self.for_each_piece(a, b, t0, |pc| {
+                self.for_each_piece_at(a, b, t0, v, |pc| {
                     for (j, &k) in moving.iter().enumerate() {
                         let tracked = j < MAX_TRACKED_MOVING;
                         if tracked && clear[j / 64] & (1 << (j % 64)) != 0 {
@@ -405,10 +432,16 @@ impl<'a> Validator<'a> {
         ((lo * len >= resolution).then(|| a.lerp(b, lo)), checks)
     }
 
-    /// Smallest clearance of the motion a -> b leaving at `t0`: vertical to the seabed
-    /// (negative below it) and Euclidean to obstacle surfaces, moving ones at the vehicle's
-    /// clock. +inf in an empty world.
+    /// Smallest clearance of the motion a -> b leaving at `t0` at cruise speed; see
+    /// [`Validator::motion_clearance_at`].
     pub fn motion_clearance(&self, a: Vec3, b: Vec3, t0: f64) -> f64 {
+        self.motion_clearance_at(a, b, t0, self.vehicle.speed)
+    }
+
+    /// Smallest clearance of the motion a -> b leaving at `t0` at through-water speed `v`:
+    /// vertical to the seabed (negative below it) and Euclidean to obstacle surfaces, moving
+    /// ones at the vehicle's clock. +inf in an empty world.
+    pub fn motion_clearance_at(&self, a: Vec3, b: Vec3, t0: f64, v: f64) -> f64 {
         let world = self.world;
         let mut best = world.segment_terrain_clearance(a, b);
         for o in world.obstacles.iter().filter(|o| o.is_fixed()) {
@@ -417,7 +450,7 @@ impl<'a> Validator<'a> {
         if self.obstacles.moving().is_empty() {
             return best;
         }
-        self.for_each_piece(a, b, t0, |pc| {
+        self.for_each_piece_at(a, b, t0, v, |pc| {
             for &k in self.obstacles.moving() {
                 best = best.min(world.obstacles[k as usize].segment_clearance(pc.p0, pc.p1, pc.t0, pc.t1));
             }

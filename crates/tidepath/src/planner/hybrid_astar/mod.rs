@@ -198,7 +198,7 @@ impl Planner for HybridAstar {
             };
             Claim::Hint(hint)
         };
-        PlannerOutput { paths, claim: Some(claim), stats, graphs: Vec::new() }
+        PlannerOutput { paths, speeds: Vec::new(), claim: Some(claim), stats, graphs: Vec::new() }
     }
 }
 
@@ -273,7 +273,7 @@ impl HybridAstar {
             goal: m.goal,
             start: m.start,
             departure: m.departure_time,
-            best_speed: m.vehicle.speed + current,
+            best_speed: m.vehicle.max_speed() + current,
             shot_ratio: self.params.shot_ratio,
             weight: self.params.weight,
             goal_headings: self.params.goal_headings,

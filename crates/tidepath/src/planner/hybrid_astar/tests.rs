@@ -36,6 +36,7 @@ fn vehicle(radius: Option<f64>) -> Vehicle {
         depth_max: 200.0,
         safety_distance: 5.0,
         turn_radius: radius,
+        speed_range: None,
     }
 }
 

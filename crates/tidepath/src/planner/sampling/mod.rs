@@ -91,17 +91,18 @@ impl<'a> Edges<'a> {
             cost: problem.cost,
             resolution,
             time_varying: !time_invariant(problem.world),
-            best_speed: v.speed + current,
+            best_speed: v.max_speed() + current,
             motion_checks: 0,
         })
     }
 
     /// The additive cost of a -> b leaving at `t0` and the arrival time; `None` when the
-    /// motion is invalid.
+    /// motion is invalid. With a speed range, at the cheapest of the vehicle's speed levels
+    /// (each level a motion check).
     #[inline]
     pub fn price(&mut self, a: Vec3, b: Vec3, t0: f64) -> Option<(f64, f64)> {
-        self.motion_checks += 1;
-        self.cost.motion_cost(&self.model, a, b, t0)
+        self.motion_checks += self.model.vehicle.speed_choices().count() as u64;
+        crate::cost::cheapest_motion(self.cost, &self.model, a, b, t0).map(|(c, t, _)| (c, t))
     }
 
     /// A lower bound on the additive cost of covering `distance` metres.

@@ -39,6 +39,7 @@ fn vehicle() -> Vehicle {
         depth_max: 200.0,
         safety_distance: 5.0,
         turn_radius: None,
+        speed_range: None,
     }
 }
 
