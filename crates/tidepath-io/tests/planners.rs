@@ -37,7 +37,7 @@ fn every_registered_planner_meets_the_interface() {
     for entry in components.planners.entries() {
         let caps = entry.build.caps;
         let mut planned = 0;
-        for name in ["demo", "salish", "headland", "fleet-crossing"] {
+        for name in ["demo", "salish", "headland", "fleet-crossing", "tests/data/fleet_crossing_speeds.toml"] {
             let s = load(name);
             // Sampling planners on a short budget (their default is 10,000 samples).
             let samples = caps.counts_unit(Unit::Samples).then_some(2000);
@@ -70,6 +70,10 @@ fn every_registered_planner_meets_the_interface() {
             };
             assert_eq!(strip(&runs[0]), strip(&runs[1]), "{}: 1 and 4 threads differ on {name}", entry.id);
             common::recheck_plan(&s, &runs[0]).unwrap();
+            // With a speed range every path comes with its segment speeds (re-checked above).
+            for m in runs[0].missions.iter().filter(|m| m.waypoints.len() >= 2 && s.vehicle.speed_range.is_some()) {
+                assert!(m.speeds.is_some(), "{}: {} has no speeds on {name}", entry.id, m.name);
+            }
             for m in &runs[0].missions {
                 assert_eq!(
                     m.status.is_success(),

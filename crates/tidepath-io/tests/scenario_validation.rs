@@ -70,6 +70,11 @@ fn grid_fields() {
 fn vehicle_values() {
     rejects(&with("speed = 1.5", "speed = 300.0"), "vehicle.speed", "300");
     rejects(&with("speed = 1.5", "speed = -1.0"), "vehicle.speed", "-1");
+    // A speed range must hold the cruise speed, each end a plausible speed.
+    rejects(&with("speed = 1.5", "speed = 1.5\nspeed_min = 2.0"), "vehicle.speed", "[2, 1.5]");
+    rejects(&with("speed = 1.5", "speed = 1.5\nspeed_max = 1.0"), "vehicle.speed", "[1.5, 1]");
+    rejects(&with("speed = 1.5", "speed = 1.5\nspeed_max = 500.0"), "vehicle.speed_max", "500");
+    rejects(&with("speed = 1.5", "speed = 1.5\nspeed_min = nan"), "vehicle.speed_min", "NaN");
     rejects(&with("max_turn_deg = 60.0", "max_turn_deg = 270.0"), "vehicle.max_turn_deg", "270");
     rejects(&with("max_pitch_deg = 30.0", "max_pitch_deg = 0.0"), "vehicle.max_pitch_deg", "0");
     rejects(&with("depth_min = 5.0", "depth_min = 2000.0"), "vehicle.depth_min", "2000");

@@ -411,8 +411,10 @@ impl Scenario {
             return None;
         }
         let models: Vec<_> = (0..missions.len()).map(|i| self.mission_model(i)).collect();
+        // Each vehicle at its plan's own segment speeds.
+        let flown: Vec<_> = models.iter().zip(missions).map(|(m, p)| m.with_speeds(p.speeds.as_deref())).collect();
         let paths: Vec<&[Vec3]> = missions.iter().map(|m| m.path()).collect();
-        Some(tidepath::fleet::check(&models, &paths, &self.fleet, &mut Vec::new()))
+        Some(tidepath::fleet::check(&flown, &paths, &self.fleet, &mut Vec::new()))
     }
 
     /// Judges a path of the first mission.
