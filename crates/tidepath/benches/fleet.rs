@@ -60,6 +60,18 @@ fn bench(c: &mut Criterion) {
     c.bench_function("fleet/3 vehicles x 20 waypoints, vortices: cost of the three paths", |b| {
         b.iter(|| paths.iter().zip(&models).map(|(p, m)| cost.cost(m, black_box(p), &mut scratch)).sum::<f64>())
     });
+    // The same paths flown at per-segment speeds, each evaluation making its model copy as the
+    // joint objective does: the price of speeds as decisions.
+    let speeds: Vec<f64> = (0..19).map(|i| 1.5 + 0.05 * i as f64).collect();
+    c.bench_function("fleet/3 vehicles x 20 waypoints, vortices: cost at per-segment speeds", |b| {
+        b.iter(|| {
+            paths
+                .iter()
+                .zip(&models)
+                .map(|(p, m)| cost.cost(&m.with_speeds(Some(black_box(&speeds))), black_box(p), &mut scratch))
+                .sum::<f64>()
+        })
+    });
     c.bench_function("fleet/3 vehicles x 20 waypoints, vortices: separation and arrival check", |b| {
         b.iter(|| check(&models, black_box(&paths), &rules, &mut legs).penalty())
     });
