@@ -287,6 +287,8 @@ pub enum Swatch {
     /// Waypoints a vehicle with a turning radius does not pass through: small hollow markers
     /// on a thin dashed line.
     Waypoints(RGBColor),
+    /// A time tick: a short bar across a line.
+    Tick(RGBColor),
 }
 
 impl Swatch {
@@ -398,6 +400,10 @@ pub fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, entries: &
                 area.draw(&PathElement::new(vec![(x0, cy), (x1, cy)], line(*c, 2))).map_err(plot_err)?;
             }
             Swatch::Diamond(c) => draw_diamond(area, (xm, cy), *c)?,
+            Swatch::Tick(c) => {
+                area.draw(&PathElement::new(vec![(x0, cy), (x1, cy)], line(c.mix(0.6), 2))).map_err(plot_err)?;
+                area.draw(&PathElement::new(vec![(xm, cy - 6), (xm, cy + 6)], line(*c, 2))).map_err(plot_err)?;
+            }
             Swatch::Waypoints(c) => {
                 for k in 0..3 {
                     let xa = x0 + k * 9;

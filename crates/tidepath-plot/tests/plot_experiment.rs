@@ -11,6 +11,8 @@ mod plot_failures;
 mod plot_flown;
 #[path = "plot/plot_smoke.rs"]
 mod plot_smoke;
+#[path = "plot/plot_time_ticks.rs"]
+mod plot_time_ticks;
 
 use tidepath::geom::{Aabb, Vec2, Vec3};
 use tidepath::world::terrain::{GaussianPeaks, Peak};

@@ -12,6 +12,7 @@ mod overlays;
 mod seabed;
 #[cfg(test)]
 mod tests;
+pub(crate) mod time_ticks;
 
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
@@ -126,6 +127,7 @@ pub fn draw_plan_view<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &P
         draw_violated_waypoints(chart, paths, u)?;
         draw_obstacle_motion(chart, fig, u, SpeedLabels::All, &mut Vec::new())?;
         draw_mark_labels(chart, fig, u, &marks)?;
+        time_ticks::draw_on_plan(chart, fig, u)?;
         draw_endpoints(chart, paths, fig.start, fig.goal, u)?;
         draw_focus(chart, fig, u)?;
         Ok(())
@@ -169,6 +171,7 @@ fn legend_entries(
     }
     out.push(LegendEntry::new("start", Swatch::Marker(Marker::Triangle, style::START)));
     out.push(LegendEntry::new("goal", Swatch::Marker(Marker::Star, style::GOAL)));
+    out.extend(time_ticks::legend(fig));
     out.extend(graph::legend_entries(fig));
     let (seg, way) = failure::kinds(paths);
     if !seg.is_empty() {

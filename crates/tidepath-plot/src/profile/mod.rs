@@ -321,6 +321,7 @@ pub fn draw_profile<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &Pla
             chart.draw_series(rings.iter().map(|&q| Circle::new(q, 3, style::line(color, 1)))).map_err(plot_err)?;
         }
     }
+    super::plan_view::time_ticks::draw_on_profile(&chart, fig, paths, &tracks, u, (lo, hi))?;
     for ((p, d), track) in paths.iter().zip(&drawn).zip(&tracks) {
         for v in p.violations.iter().filter(|v| !failure::on_segment(v.kind)) {
             if let Some(q) = at_waypoint(track, d, p, v.index) {
