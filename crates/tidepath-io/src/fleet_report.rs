@@ -13,6 +13,17 @@ pub struct FleetReport {
     /// The arrivals: spread, first and last, and whether the fleet's rule holds.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub arrival: Option<ArrivalReport>,
+    /// The fleet's cost terms (`separation`, `arrival`): what a joint optimizer adds to the
+    /// missions' costs while a rule is broken; the plan's `cost` includes them.
+    #[serde(default)]
+    pub cost_terms: serde_json::Map<String, serde_json::Value>,
+}
+
+impl FleetReport {
+    /// The sum of the fleet's cost terms.
+    pub fn cost(&self) -> f64 {
+        self.cost_terms.values().filter_map(|v| v.as_f64()).sum()
+    }
 }
 
 /// A fleet's arrivals.
@@ -71,6 +82,7 @@ impl FleetReport {
                 last_s: a.last.1,
                 kept: a.broken.is_none(),
             }),
+            cost_terms: check.terms().iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect(),
         }
     }
 
@@ -88,16 +100,19 @@ impl FleetReport {
             0 => format!("{closest}; separation kept"),
             n => format!("{closest}; {n} pair(s) closer than their separation"),
         };
+        let terms: Vec<String> =
+            self.cost_terms.iter().map(|(k, v)| format!("{k} {:.4}", v.as_f64().unwrap_or(f64::NAN))).collect();
+        let cost = format!("fleet cost {:.4} ({})", self.cost(), terms.join(", "));
         match &self.arrival {
             Some(a) => format!(
-                "{separation}; arrivals spread over {:.1} s ({} first, {} last), {}: {}",
+                "{separation}; arrivals spread over {:.1} s ({} first, {} last), {}: {}; {cost}",
                 a.spread_s,
                 a.first,
                 a.last,
                 a.rule,
                 if a.kept { "kept" } else { "broken" }
             ),
-            None => separation,
+            None => format!("{separation}; {cost}"),
         }
     }
 }

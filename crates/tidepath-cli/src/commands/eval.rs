@@ -84,6 +84,9 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
     if let Some(check) = scenario.fleet_check(&judged) {
         let names: Vec<String> = judged.iter().map(|m| m.name.clone()).collect();
         println!("  fleet: {}", tidepath_io::FleetReport::new(&check, &scenario.fleet, &names).line());
+        // The plan's cost includes the fleet's terms.
+        total += check.penalty();
+        println!("  total cost with the fleet's terms {total:.9}");
     }
     if let Some(recorded) = plan.cost {
         let rel = (total - recorded).abs() / recorded.abs().max(f64::MIN_POSITIVE);

@@ -155,11 +155,18 @@ impl FleetCheck {
     /// The joint objective's penalty: [`SEPARATION_PENALTY`] per conflict, plus as much again
     /// times its shortfall over the separation.
     pub fn penalty(&self) -> f64 {
-        self.conflicts
+        self.terms().iter().map(|(_, v)| v).sum()
+    }
+
+    /// The penalty's two terms, named as plans report them: `separation` (every pair too
+    /// close) and `arrival` (the broken arrival rule). Both 0 for a fleet that keeps its rules.
+    pub fn terms(&self) -> [(&'static str, f64); 2] {
+        let separation = self
+            .conflicts
             .iter()
             .map(|c| SEPARATION_PENALTY * (1.0 + ((c.required - c.approach.distance) / c.required).clamp(0.0, 1.0)))
-            .sum::<f64>()
-            + self.arrival.as_ref().map_or(0.0, arrival_penalty)
+            .sum::<f64>();
+        [("separation", separation), ("arrival", self.arrival.as_ref().map_or(0.0, arrival_penalty))]
     }
 }
 

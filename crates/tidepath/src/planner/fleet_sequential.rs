@@ -192,7 +192,8 @@ pub(super) fn solve_sequential(
             m.status = Status::Infeasible;
         }
     }
-    let cost = missions.iter().map(|m| m.cost).sum();
+    // The missions' costs plus the fleet's terms: what a joint optimizer minimised.
+    let cost = missions.iter().map(|m| m.cost).sum::<f64>() + fleet.as_ref().map_or(0.0, |f| f.penalty());
     let (status, reason) = super::solve::overall(&missions);
     Ok(Plan { planner: planner.id().to_string(), status, reason, missions, cost, stats, graphs, fleet })
 }

@@ -338,7 +338,8 @@ pub fn solve(
             }
         };
     }
-    let cost = missions.iter().map(|m| m.cost).sum();
+    // The missions' costs plus the fleet's terms: what a joint optimizer minimised.
+    let cost = missions.iter().map(|m| m.cost).sum::<f64>() + fleet.as_ref().map_or(0.0, |f| f.penalty());
     let (status, reason) = overall(&missions);
     Ok(Plan { planner: id, status, reason, missions, cost, stats, graphs, fleet })
 }
