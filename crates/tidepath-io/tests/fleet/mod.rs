@@ -51,6 +51,12 @@ fn the_independent_sampler_sees_the_conflict_the_exact_check_reports() {
     assert!(!r.status.is_success());
     let e = recheck_separation(&s, &r).unwrap_err();
     assert!(e.contains("auv-east and auv-north"), "{e}");
+    // The plan's cost is the missions' plus the fleet's terms: 10, and 10 more for meeting
+    // at the very point (the whole separation short).
+    assert_eq!(fleet.cost_terms["separation"], 20.0);
+    assert_eq!(fleet.cost_terms["arrival"], 0.0);
+    let missions: f64 = r.missions.iter().map(|m| m.cost.unwrap()).sum();
+    assert!((r.cost.unwrap() - missions - 20.0).abs() < 1e-9, "{:?} vs {missions}", r.cost);
 }
 
 #[test]
