@@ -254,6 +254,25 @@ pub(super) fn flown_last<'p, 'a>(paths: &'p [PlotPath<'a>]) -> Vec<(usize, &'p P
     out
 }
 
+/// The box of the start's or goal's label, the marker at pixel `c` in a plot of `pw` x `ph`:
+/// right, left, above or below it, the fitting side most away from the path (`away`, the
+/// direction from the path's neighbouring point); the right side when none fits. Shared with
+/// the time ticks, whose labels keep clear of it.
+pub(crate) fn endpoint_box(c: (i32, i32), away: Option<Vec2>, label: &str, (pw, ph): (i32, i32)) -> LabelBox {
+    let (tw, th) = (style::text_width(label, style::LEGEND_PX).round() as i32 + 8, 18);
+    let candidates = [
+        ((c.0 + 12, c.1 - th / 2), Vec2::new(1.0, 0.0)),
+        ((c.0 - 12 - tw, c.1 - th / 2), Vec2::new(-1.0, 0.0)),
+        ((c.0 - tw / 2, c.1 - 14 - th), Vec2::new(0.0, 1.0)),
+        ((c.0 - tw / 2, c.1 + 14), Vec2::new(0.0, -1.0)),
+    ];
+    let fits = |((x, y), _): &&((i32, i32), Vec2)| *x >= 2 && *y >= 2 && x + tw <= pw - 2 && y + th <= ph - 2;
+    let score = |d: Vec2| away.map(|a| a.normalize_or_zero().dot(d)).unwrap_or(d.x);
+    let best = candidates.iter().filter(fits).max_by(|a, b| score(a.1).total_cmp(&score(b.1)));
+    let (x, y) = best.unwrap_or(&candidates[0]).0;
+    [(x, y), (x + tw, y + th)]
+}
+
 /// The start and goal markers, each labelled on the side away from the first path; returns
 /// the labels' boxes.
 pub(crate) fn draw_endpoints<DB: DrawingBackend>(
@@ -279,26 +298,10 @@ pub(crate) fn draw_endpoints<DB: DrawingBackend>(
         }
         let c = to_px(chart, p.x / u, p.y / u);
         style::draw_marker(&px, c, marker, color)?;
-        let (tw, th) = (style::text_width(label, style::LEGEND_PX).round() as i32 + 8, 18);
-        // Candidate label boxes (top-left corners) right, left, above, below the marker.
-        let candidates = [
-            ((c.0 + 12, c.1 - th / 2), Vec2::new(1.0, 0.0)),
-            ((c.0 - 12 - tw, c.1 - th / 2), Vec2::new(-1.0, 0.0)),
-            ((c.0 - tw / 2, c.1 - 14 - th), Vec2::new(0.0, 1.0)),
-            ((c.0 - tw / 2, c.1 + 14), Vec2::new(0.0, -1.0)),
-        ];
-        let fits =
-            |&((x, y), _): &((i32, i32), Vec2)| x >= 2 && y >= 2 && x + tw <= pw as i32 - 2 && y + th <= ph as i32 - 2;
-        let score = |d: Vec2| away.map(|a| a.normalize_or_zero().dot(d)).unwrap_or(d.x);
-        let best = candidates
-            .iter()
-            .filter(|c| fits(c))
-            .max_by(|a, b| score(a.1).total_cmp(&score(b.1)))
-            .or(candidates.first())
-            .map(|c| c.0)
-            .unwrap_or(c);
-        px.draw(&Rectangle::new([best, (best.0 + tw, best.1 + th)], style::fill(WHITE.mix(0.85)))).map_err(plot_err)?;
-        boxes.push([best, (best.0 + tw, best.1 + th)]);
+        let [best, corner] = endpoint_box(c, away, label, (pw as i32, ph as i32));
+        let (tw, th) = (corner.0 - best.0, corner.1 - best.1);
+        px.draw(&Rectangle::new([best, corner], style::fill(WHITE.mix(0.85)))).map_err(plot_err)?;
+        boxes.push([best, corner]);
         px.draw(&Text::new(
             label,
             (best.0 + tw / 2, best.1 + th / 2),

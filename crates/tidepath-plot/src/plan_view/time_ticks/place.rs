@@ -7,9 +7,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::super::super::style::{self, plot_err};
 use super::super::super::{failure, PlanFigure};
-use super::super::overlays::LabelBox;
+use super::super::overlays::{endpoint_box, LabelBox};
 use tidepath::error::Result;
-use tidepath::geom::Vec2;
 use tidepath::planner::Focus;
 
 /// The labels' font size (px): smaller than the legend's, they are many.
@@ -111,23 +110,6 @@ pub(super) fn plan_keep_out(
         out.push(focus_box(fig, f, px(f.at), (pw, ph)));
     }
     out
-}
-
-/// Where `draw_endpoints` puts the start's or goal's label, the marker at `c`: beside it on
-/// the side away from the first path (`away`), as far as it fits.
-fn endpoint_box(c: (i32, i32), away: Option<Vec2>, label: &str, (pw, ph): (i32, i32)) -> LabelBox {
-    let (tw, th) = (style::text_width(label, style::LEGEND_PX).round() as i32 + 8, 18);
-    let candidates = [
-        ((c.0 + 12, c.1 - th / 2), Vec2::new(1.0, 0.0)),
-        ((c.0 - 12 - tw, c.1 - th / 2), Vec2::new(-1.0, 0.0)),
-        ((c.0 - tw / 2, c.1 - 14 - th), Vec2::new(0.0, 1.0)),
-        ((c.0 - tw / 2, c.1 + 14), Vec2::new(0.0, -1.0)),
-    ];
-    let fits = |((x, y), _): &&((i32, i32), Vec2)| *x >= 2 && *y >= 2 && x + tw <= pw - 2 && y + th <= ph - 2;
-    let score = |d: Vec2| away.map(|a| a.normalize_or_zero().dot(d)).unwrap_or(d.x);
-    let best = candidates.iter().filter(fits).max_by(|a, b| score(a.1).total_cmp(&score(b.1)));
-    let (x, y) = best.unwrap_or(&candidates[0]).0;
-    [(x, y), (x + tw, y + th)]
 }
 
 /// Where `draw_focus` puts the label of focus `f`, its ring at `c`.
