@@ -12,9 +12,12 @@ pub mod context;
 pub mod de;
 pub mod functions;
 pub mod ga;
+pub mod mwpa;
 pub mod population;
 pub mod pso;
 pub mod runner;
+mod wolf;
+pub mod wpa;
 
 pub use crate::termination::{StopReason, Termination};
 pub use context::Context;

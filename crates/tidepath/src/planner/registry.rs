@@ -11,7 +11,9 @@ use crate::encoding::EncodingSpec;
 use crate::error::{Error, Result};
 use crate::optim::de::{De, DeParams};
 use crate::optim::ga::{Ga, GaParams};
+use crate::optim::mwpa::{Mwpa, MwpaParams};
 use crate::optim::pso::{Pso, PsoParams};
+use crate::optim::wpa::{Wpa, WpaParams};
 use crate::optim::Optimizer;
 use crate::registry::{Entry, Registry};
 
@@ -103,6 +105,20 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
         citation: "Storn & Price 1997; reference baseline",
         params: DeParams::SPECS,
         build: BuildPlanner::optimizer(|t, p| Ok(Box::new(De::new(DeParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "wpa",
+        description: "original wolf pack algorithm: scouting, calling, besieging, renewal",
+        citation: "Wu, Zhang & Wu 2013; baseline in wpa2017",
+        params: WpaParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Wpa::new(WpaParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "mwpa",
+        description: "modified wolf pack algorithm: interactive scouting, adaptive raid step, shrinking siege",
+        citation: "wpa2017 (Zhang et al. 2017)",
+        params: MwpaParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Mwpa::new(MwpaParams::from_table(t, p)?)))),
     },
     Entry {
         id: "astar",

@@ -1,0 +1,461 @@
+//! The wolf pack engine shared by `wpa` (the original wolf pack algorithm, Wu, Zhang & Wu 2013)
+//! and `mwpa` (its modification in wpa2017, Zhang et al., IEEE Access 2017). Both run the same
+//! five phases each iteration; [`Variant`] says which form of scouting, raiding and besieging a
+//! run uses. The operators are free functions so tests can check them against hand-computed
+//! values; the papers' equations are cited in `wpa.rs` and `mwpa.rs`, and the readings of
+//! ambiguous points in docs/papers/wpa2017.md.
+//!
+//! One iteration, minimising (ranks by cost, ties to the lower index, NaN last):
+//!
+//! ```text
+//! lead <- best wolf;  T <- U{ceil(N/(alpha+1)) .. floor(N/alpha)} (at most N-1)
+//! scouts <- the T best after the lead;  ferocious <- the rest
+//! scouting   up to T_max rounds over the scouts (stops once a scout beats the lead)
+//! calling    each ferocious wolf raids towards the lead until its mean absolute per-dimension
+//!            distance is <= d_near, it beats the lead (it becomes the lead), or T_max raids
+//! besieging  every wolf but the lead: x + factor * lambda * step_c * |G - x|, greedy
+//! renewal    R <- U{ceil(N/(2 beta)) .. floor(N/beta)} (at most N-1) worst wolves replaced by
+//!            uniform random wolves
+//! ```
+//!
+//! Random draws, in order, per iteration: T; per scout visit (MWPA only) the two partner scouts
+//! then phi (D values) then varphi (D values); per besieged wolf (in index order) one lambda;
+//! R; then the renewed wolves' coordinates (wolf by wolf, dimension by dimension). The
+//! original WPA's scouting and calling draw nothing.
+//!
+//! Every moved wolf goes through the objective's repair; every cost goes through the
+//! [`Context`], which counts it. Scouting and calling poll [`Context::should_stop`] before
+//! every evaluation, so a wall-time limit or Ctrl-C cuts a generation.
+
+use std::cmp::Ordering;
+use std::f64::consts::PI;
+
+use rand::Rng as _;
+
+use super::{Context, Population};
+
+/// Which operators a run uses.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Variant {
+    /// MWPA's interactive scouting candidate (eq. 23) besides the h directions.
+    pub interactive: bool,
+    /// MWPA's adaptive raid step (eqs. 25-26).
+    pub adaptive: Option<Adaptive>,
+    /// MWPA's siege decay c (eq. 29); `None`: the original constant siege step.
+    pub decay: Option<f64>,
+}
+
+/// MWPA's adaptive raid step: the weight range of eq. 26 and whether the weight compounds
+/// over the raids of a calling phase.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Adaptive {
+    pub w_min: f64,
+    pub w_max: f64,
+    /// `s <- w s` before every raid (from s = step_b at the start of the phase); otherwise
+    /// `s = w step_b` for the whole phase.
+    pub compound: bool,
+}
+
+/// Settings common to both algorithms, as fractions of each dimension's range for the steps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Settings {
+    pub population: usize,
+    pub t_max: usize,
+    pub omega: f64,
+    pub step_a: f64,
+    pub step_b: f64,
+    pub step_c: f64,
+    pub alpha: f64,
+    pub beta: f64,
+    pub h: usize,
+}
+
+/// Number of scouts: a uniform integer in `[ceil(n/(alpha+1)), floor(n/alpha)]`, kept in
+/// `[0, n-1]` (the lead is never a scout).
+pub fn scout_count(n: usize, alpha: f64, u: f64) -> usize {
+    uniform_count(n as f64 / (alpha + 1.0), n as f64 / alpha, n, u)
+}
+
+/// A uniform integer in `[ceil(lo), floor(hi)]` from `u` in [0, 1), at most `n - 1` (an empty
+/// interval gives `ceil(lo)`).
+fn uniform_count(lo: f64, hi: f64, n: usize, u: f64) -> usize {
+    let lo = lo.ceil() as usize;
+    let hi = (hi.floor() as usize).max(lo);
+    let t = lo + ((u * (hi - lo + 1) as f64) as usize).min(hi - lo);
+    t.min(n.saturating_sub(1))
+}
+
+/// Number of renewed wolves: a uniform integer in `[ceil(n/(2 beta)), floor(n/beta)]`, kept in
+/// `[0, n-1]` (the lead is never renewed).
+pub fn renewal_count(n: usize, beta: f64, u: f64) -> usize {
+    uniform_count(n as f64 / (2.0 * beta), n as f64 / beta, n, u)
+}
+
+/// d_near = (1/(D omega)) sum_d |max_d - min_d| (wpa2017 eq. 27; the original WPA's rule).
+pub fn d_near(lower: &[f64], upper: &[f64], omega: f64) -> f64 {
+    let d = lower.len().max(1) as f64;
+    lower.iter().zip(upper).map(|(lo, hi)| (hi - lo).abs()).sum::<f64>() / (d * omega)
+}
+
+/// The distance compared with d_near: the mean absolute per-dimension difference.
+pub fn distance(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (x - y).abs()).sum::<f64>() / a.len().max(1) as f64
+}
+
+/// Scouting direction p of h (eq. 22 read as sin(2 pi p/h)): `out = x + sin(2 pi p/h) step_a`.
+pub fn direction(x: &[f64], step_a: &[f64], p: usize, h: usize, out: &mut [f64]) {
+    let s = (2.0 * PI * p as f64 / h as f64).sin();
+    for ((o, &x), &a) in out.iter_mut().zip(x).zip(step_a) {
+        *o = x + s * a;
+    }
+}
+
+/// MWPA's interactive candidate (eq. 23): `out = x + phi (lead - x) + varphi (xa - xb)`.
+pub fn interactive(x: &[f64], lead: &[f64], xa: &[f64], xb: &[f64], phi: &[f64], varphi: &[f64], out: &mut [f64]) {
+    for d in 0..out.len() {
+        out[d] = x[d] + phi[d] * (lead[d] - x[d]) + varphi[d] * (xa[d] - xb[d]);
+    }
+}
+
+/// One raid: `x_d += step_d sign(g_d - x_d)`, with sign(0) = 0 (a coordinate already on the
+/// lead's stays).
+pub fn raid(x: &mut [f64], g: &[f64], step: &[f64]) {
+    for ((x, &g), &s) in x.iter_mut().zip(g).zip(step) {
+        let diff = g - *x;
+        let sign = if diff > 0.0 {
+            1.0
+        } else if diff < 0.0 {
+            -1.0
+        } else {
+            0.0
+        };
+        *x += s * sign;
+    }
+}
+
+/// One siege move: `out_d = x_d + factor step_c_d |g_d - x_d|`, `factor` = lambda (WPA) or
+/// xi lambda (MWPA, eq. 28).
+pub fn siege(x: &[f64], g: &[f64], step_c: &[f64], factor: f64, out: &mut [f64]) {
+    for d in 0..out.len() {
+        out[d] = x[d] + factor * step_c[d] * (g[d] - x[d]).abs();
+    }
+}
+
+/// The adaptive raid weight (eq. 26 as read in docs/papers/wpa2017.md): from the wolf's own
+/// cost f, the pack's best f_min and mean f_avg,
+/// `w_min + (w_max - w_min)(f - f_min)/(f_avg - f_min)` when f <= f_avg, else w_max;
+/// w_min when f_avg == f_min.
+pub fn adaptive_weight(f: f64, f_min: f64, f_avg: f64, w_min: f64, w_max: f64) -> f64 {
+    if f > f_avg || f.is_nan() {
+        w_max
+    } else if f_avg <= f_min {
+        w_min
+    } else {
+        (w_min + (w_max - w_min) * (f - f_min) / (f_avg - f_min)).clamp(w_min, w_max)
+    }
+}
+
+fn cmp_cost(a: f64, b: f64) -> Ordering {
+    match (a.is_nan(), b.is_nan()) {
+        (true, true) => Ordering::Equal,
+        (true, false) => Ordering::Greater,
+        (false, true) => Ordering::Less,
+        _ => a.partial_cmp(&b).expect("not NaN"),
+    }
+}
+
+/// True when `a` is strictly better than `b` (NaN is never better).
+#[inline]
+fn better(a: f64, b: f64) -> bool {
+    a < b || (b.is_nan() && !a.is_nan())
+}
+
+/// A wolf pack and its reused buffers.
+#[derive(Clone, Debug)]
+pub(crate) struct Pack {
+    pub settings: Settings,
+    pub variant: Variant,
+    pub x: Population,
+    pub cost: Vec<f64>,
+    pub lead: usize,
+    /// Siege factor xi (eq. 29); stays 1 for the original WPA.
+    pub xi: f64,
+    order: Vec<usize>,
+    step_a: Vec<f64>,
+    step_b: Vec<f64>,
+    step_c: Vec<f64>,
+    d_near: f64,
+    /// Scouting candidates: h rows (h + 1 for MWPA).
+    cand: Population,
+    cand_cost: Vec<f64>,
+    /// The lead's position while others raid or besiege it.
+    g: Vec<f64>,
+    /// A raiding wolf's step, per dimension.
+    s: Vec<f64>,
+    phi: Vec<f64>,
+    varphi: Vec<f64>,
+    /// Siege trials of every wolf but the lead (N - 1 rows) and their costs.
+    trial: Population,
+    trial_cost: Vec<f64>,
+    row: Vec<f64>,
+}
+
+impl Pack {
+    pub fn new(settings: Settings, variant: Variant) -> Self {
+        Self {
+            settings,
+            variant,
+            x: Population::zeros(0, 0),
+            cost: Vec::new(),
+            lead: 0,
+            xi: 1.0,
+            order: Vec::new(),
+            step_a: Vec::new(),
+            step_b: Vec::new(),
+            step_c: Vec::new(),
+            d_near: 0.0,
+            cand: Population::zeros(0, 0),
+            cand_cost: Vec::new(),
+            g: Vec::new(),
+            s: Vec::new(),
+            phi: Vec::new(),
+            varphi: Vec::new(),
+            trial: Population::zeros(0, 0),
+            trial_cost: Vec::new(),
+            row: Vec::new(),
+        }
+    }
+
+    pub fn init(&mut self, ctx: &mut Context<'_>) {
+        let n = self.settings.population;
+        let dim = ctx.dim();
+        let ranges: Vec<f64> = (0..dim).map(|d| ctx.range(d)).collect();
+        self.step_a = ranges.iter().map(|r| r * self.settings.step_a).collect();
+        self.step_b = ranges.iter().map(|r| r * self.settings.step_b).collect();
+        self.step_c = ranges.iter().map(|r| r * self.settings.step_c).collect();
+        self.d_near = d_near(ctx.lower(), ctx.upper(), self.settings.omega);
+        self.x = Population::initial(n, ctx);
+        for i in 0..n {
+            ctx.repair(self.x.row_mut(i));
+        }
+        self.cost = vec![f64::INFINITY; n];
+        ctx.evaluate_population(&self.x, &mut self.cost);
+        let rows = self.settings.h + usize::from(self.variant.interactive);
+        self.cand = Population::zeros(rows, dim);
+        self.cand_cost = vec![f64::INFINITY; rows];
+        self.g = vec![0.0; dim];
+        self.s = vec![0.0; dim];
+        self.phi = vec![0.0; dim];
+        self.varphi = vec![0.0; dim];
+        self.trial = Population::zeros(n.saturating_sub(1), dim);
+        self.trial_cost = vec![f64::INFINITY; n.saturating_sub(1)];
+        self.row = vec![0.0; dim];
+        self.order = (0..n).collect();
+        self.xi = 1.0;
+        self.rank();
+    }
+
+    /// Sorts `order` by cost (stable: ties keep the lower index) and sets the lead.
+    fn rank(&mut self) {
+        let cost = &self.cost;
+        self.order.clear();
+        self.order.extend(0..cost.len());
+        self.order.sort_by(|&a, &b| cmp_cost(cost[a], cost[b]));
+        self.lead = self.order[0];
+    }
+
+    fn halt(ctx: &mut Context<'_>) -> bool {
+        ctx.exhausted() || ctx.should_stop()
+    }
+
+    pub fn step(&mut self, ctx: &mut Context<'_>) {
+        let n = self.x.len();
+        if n == 0 {
+            return;
+        }
+        self.rank();
+        let u: f64 = ctx.rng().random();
+        let t = scout_count(n, self.settings.alpha, u);
+        if !self.scout(ctx, t) {
+            return;
+        }
+        if !self.call(ctx, t) {
+            return;
+        }
+        self.besiege(ctx);
+        self.renew(ctx);
+    }
+
+    /// Scouting; false when the run must stop.
+    fn scout(&mut self, ctx: &mut Context<'_>, t: usize) -> bool {
+        let (h, dim) = (self.settings.h, self.x.dim());
+        for _ in 0..self.settings.t_max {
+            for k in 1..=t {
+                if Self::halt(ctx) {
+                    return false;
+                }
+                let i = self.order[k];
+                for p in 1..=h {
+                    direction(self.x.row(i), &self.step_a, p, h, self.cand.row_mut(p - 1));
+                }
+                if self.variant.interactive {
+                    // Two other scouts a != b (the difference term is zero with fewer).
+                    let (a, b) = if t >= 3 {
+                        let a = loop {
+                            let r = self.order[1 + ctx.rng().random_range(0..t)];
+                            if r != i {
+                                break r;
+                            }
+                        };
+                        let b = loop {
+                            let r = self.order[1 + ctx.rng().random_range(0..t)];
+                            if r != i && r != a {
+                                break r;
+                            }
+                        };
+                        (a, b)
+                    } else {
+                        (i, i)
+                    };
+                    for v in self.phi.iter_mut() {
+                        *v = ctx.rng().random::<f64>();
+                    }
+                    for v in self.varphi.iter_mut() {
+                        *v = 2.0 * ctx.rng().random::<f64>() - 1.0;
+                    }
+                    let (x, lead, xa, xb) = (self.x.row(i), self.x.row(self.lead), self.x.row(a), self.x.row(b));
+                    interactive(x, lead, xa, xb, &self.phi, &self.varphi, &mut self.row);
+                    self.cand.row_mut(h).copy_from_slice(&self.row);
+                }
+                for r in 0..self.cand.len() {
+                    ctx.repair(self.cand.row_mut(r));
+                }
+                ctx.evaluate_population(&self.cand, &mut self.cand_cost);
+                let mut best = 0;
+                for r in 1..self.cand_cost.len() {
+                    if better(self.cand_cost[r], self.cand_cost[best]) {
+                        best = r;
+                    }
+                }
+                if better(self.cand_cost[best], self.cost[i]) {
+                    self.cost[i] = self.cand_cost[best];
+                    self.x.row_mut(i)[..dim].copy_from_slice(self.cand.row(best));
+                }
+                if better(self.cost[i], self.cost[self.lead]) {
+                    self.lead = i;
+                    return true;
+                }
+            }
+        }
+        true
+    }
+
+    /// Calling (summoning); false when the run must stop.
+    fn call(&mut self, ctx: &mut Context<'_>, t: usize) -> bool {
+        let n = self.x.len();
+        self.g.copy_from_slice(self.x.row(self.lead));
+        // The pack's mean cost at the start of the phase, for the adaptive weight.
+        let (mut sum, mut cnt) = (0.0, 0usize);
+        for &c in &self.cost {
+            if c.is_finite() {
+                sum += c;
+                cnt += 1;
+            }
+        }
+        let f_avg = if cnt > 0 { sum / cnt as f64 } else { f64::INFINITY };
+        for k in (t + 1)..n {
+            let i = self.order[k];
+            if i == self.lead {
+                continue;
+            }
+            self.s.copy_from_slice(&self.step_b);
+            // MWPA: the wolf's weight from its cost at this iteration (F^k of eq. 26), applied
+            // once to the reset step (eq. 25 per iteration) or before every raid (compounding).
+            let mut per_raid = None;
+            if let Some(a) = self.variant.adaptive {
+                let w = adaptive_weight(self.cost[i], self.cost[self.lead], f_avg, a.w_min, a.w_max);
+                if a.compound {
+                    per_raid = Some(w);
+                } else {
+                    self.s.iter_mut().for_each(|s| *s *= w);
+                }
+            }
+            for _ in 0..self.settings.t_max {
+                if distance(self.x.row(i), &self.g) <= self.d_near {
+                    break;
+                }
+                if Self::halt(ctx) {
+                    return false;
+                }
+                if let Some(w) = per_raid {
+                    self.s.iter_mut().for_each(|s| *s *= w);
+                }
+                let x = self.x.row_mut(i);
+                raid(x, &self.g, &self.s);
+                ctx.repair(x);
+                let f = ctx.evaluate(self.x.row(i));
+                self.cost[i] = f;
+                if better(f, self.cost[self.lead]) {
+                    self.lead = i;
+                    self.g.copy_from_slice(self.x.row(i));
+                    break;
+                }
+            }
+        }
+        true
+    }
+
+    /// Besieging: every wolf but the lead tries one move, evaluated together, kept if better.
+    fn besiege(&mut self, ctx: &mut Context<'_>) {
+        let n = self.x.len();
+        if n < 2 {
+            return;
+        }
+        if let Some(c) = self.variant.decay {
+            self.xi *= c;
+        }
+        let lead = self.lead;
+        self.g.copy_from_slice(self.x.row(lead));
+        for r in 0..n - 1 {
+            let i = if r < lead { r } else { r + 1 };
+            let lambda = 2.0 * ctx.rng().random::<f64>() - 1.0;
+            siege(self.x.row(i), &self.g, &self.step_c, self.xi * lambda, self.trial.row_mut(r));
+            ctx.repair(self.trial.row_mut(r));
+        }
+        ctx.evaluate_population(&self.trial, &mut self.trial_cost);
+        for r in 0..n - 1 {
+            let i = if r < lead { r } else { r + 1 };
+            if better(self.trial_cost[r], self.cost[i]) {
+                self.cost[i] = self.trial_cost[r];
+                self.x.copy_row_from(i, &self.trial, r);
+            }
+        }
+    }
+
+    /// Renewal: the R worst wolves become uniform random wolves.
+    fn renew(&mut self, ctx: &mut Context<'_>) {
+        let n = self.x.len();
+        self.rank();
+        let u: f64 = ctx.rng().random();
+        let r = renewal_count(n, self.settings.beta, u);
+        for k in (n - r)..n {
+            let i = self.order[k];
+            for d in 0..self.x.dim() {
+                let (lo, hi) = (ctx.lower()[d], ctx.upper()[d]);
+                let u: f64 = ctx.rng().random();
+                self.x.row_mut(i)[d] = lo + u * (hi - lo);
+            }
+            ctx.repair(self.x.row_mut(i));
+        }
+        for k in (n - r)..n {
+            if Self::halt(ctx) {
+                // Not evaluated: ranked last until evaluated.
+                self.cost[self.order[k]] = f64::INFINITY;
+                continue;
+            }
+            let i = self.order[k];
+            self.cost[i] = ctx.evaluate(self.x.row(i));
+        }
+        self.rank();
+    }
+}
