@@ -2,8 +2,10 @@
 //! (`[cost] model = "..."`). `eval` prints the terms, so a user sees why a path costs what it does.
 
 pub mod general;
+pub mod wpa2017;
 
 pub use general::{GeneralCost, GeneralWeights};
+pub use wpa2017::{Wpa2017Cost, Wpa2017Weights};
 
 use crate::error::Result;
 use crate::geom::Vec3;
@@ -14,13 +16,22 @@ use crate::scratch::Scratch;
 pub type BuildCost = fn(&toml::Table) -> Result<Box<dyn CostModel>>;
 
 /// The cost models, selected by `[cost] model`; parameters are `[cost.weights]`.
-pub const COST_MODELS: &[Entry<BuildCost>] = &[Entry {
-    id: "general",
-    description: "normalised length and time plus violation counts and excesses (users' own missions)",
-    citation: "tidepath",
-    params: GeneralWeights::SPECS,
-    build: |t| Ok(Box::new(GeneralCost::new(GeneralWeights::from_table(t, "cost.weights")?))),
-}];
+pub const COST_MODELS: &[Entry<BuildCost>] = &[
+    Entry {
+        id: "general",
+        description: "normalised length and time plus violation counts and excesses (users' own missions)",
+        citation: "tidepath",
+        params: GeneralWeights::SPECS,
+        build: |t| Ok(Box::new(GeneralCost::new(GeneralWeights::from_table(t, "cost.weights")?))),
+    },
+    Entry {
+        id: "wpa2017",
+        description: "length, depth penalty, buoyancy and rudder energy, large penalty per violation (eqs. 17-21)",
+        citation: "wpa2017",
+        params: Wpa2017Weights::SPECS,
+        build: |t| Ok(Box::new(Wpa2017Cost::new(Wpa2017Weights::from_table(t, "cost.weights")?))),
+    },
+];
 
 pub fn registry() -> Registry<BuildCost> {
     Registry::new("cost model", "cost.model", "tidepath planners", COST_MODELS)
