@@ -18,14 +18,18 @@ fn with_radius(name: &str, radius: f64) -> Scenario {
 
 /// A short run where the planner counts iterations; searches run whole.
 fn request(planner: &str, smoother: Option<&str>, seed: u64) -> PlanRequest {
-    let counts_iterations = tidepath::planner::registry()
-        .find(planner)
-        .is_some_and(|p| p.build.caps.counts_unit(tidepath::planner::Unit::Iterations));
+    let registry = tidepath::planner::registry();
+    let entry = registry.find(planner);
+    let counts_iterations = entry.is_some_and(|p| p.build.caps.counts_unit(tidepath::planner::Unit::Iterations));
+    // An evaluation cap that one-population-per-iteration optimizers do not reach (at most
+    // 50 x 41): the wolf packs repeat scouting and raiding within an iteration.
+    let optimizer = entry.is_some_and(|p| p.build.is_optimizer());
     PlanRequest {
         planner: Some(planner.into()),
         smoother: smoother.map(str::to_string),
         seed,
         iterations: counts_iterations.then_some(40),
+        evaluations: optimizer.then_some(60 * 41),
         parallel: true,
         ..PlanRequest::default()
     }

@@ -41,11 +41,19 @@ fn every_registered_planner_meets_the_interface() {
             let s = load(name);
             // Sampling planners on a short budget (their default is 10,000 samples).
             let samples = caps.counts_unit(Unit::Samples).then_some(2000);
+            // Optimizers capped at 20,000 evaluations, which those with one population per
+            // iteration never reach here (at most 300 x 50): the wolf packs, which repeat
+            // scouting and raiding within an iteration, would otherwise take minutes.
+            // (A limit on the command line replaces the scenario's: its iterations are given too.)
+            let evaluations = entry.build.is_optimizer().then_some(20_000);
+            let iterations = if evaluations.is_some() { s.planner.iterations } else { None };
             let req = PlanRequest {
                 planner: Some(entry.id.into()),
                 seed: 11,
                 parallel: true,
                 samples,
+                evaluations,
+                iterations,
                 ..PlanRequest::default()
             };
             let runs: Vec<_> = pools.iter().map(|p| p.install(|| s.plan_in(&components, &req, &mut |_| {}))).collect();

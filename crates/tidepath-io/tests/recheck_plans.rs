@@ -57,6 +57,10 @@ fn no_disagreement_over_a_thousand_plans_from_every_planner() {
                             .caps
                             .counts_unit(tidepath::planner::Unit::Iterations)
                             .then_some(iterations),
+                        // And an evaluation cap the population-per-iteration optimizers do not
+                        // reach here (populations up to 50): the wolf packs repeat scouting and
+                        // raiding up to T_max times per iteration and would take minutes.
+                        evaluations: optimizer.then_some(50 * (iterations + 1)),
                         samples: sampling.then_some(300 + 300 * seed),
                         smoother,
                         ..PlanRequest::default()
