@@ -73,6 +73,13 @@ pub const BUILTIN: &[Entry<&str>] = &[
         build: include_str!("../../scenarios/fleet-crossing.toml"),
     },
     Entry {
+        id: "wpa-threats",
+        description: "3-D: wpa2017's path experiment, a 50 km cube over Gaussian threat peaks, flown with Dubins turns of 300 m",
+        citation: "Zhang et al. 2017 (wpa2017), section IV.B; peak values ours (the paper prints only Figure 2)",
+        params: &[],
+        build: include_str!("../../scenarios/wpa-threats.toml"),
+    },
+    Entry {
         id: "fleet-rendezvous",
         description: "3-D: three AUVs over the demo seabed meet at one point, arriving within 60 s of each other, 100 m apart, each choosing its speeds in 0.5-4 kn",
         citation: "tidepath (synthetic; speeds and arrival rule after ijs2023 section IV.C)",
@@ -115,5 +122,38 @@ mod tests {
             assert!(w.len() >= 2, "{}", e.id);
             assert_eq!((w[0], w[w.len() - 1]), (s.start.to_array(), s.goal.to_array()), "{}", e.id);
         }
+    }
+
+    /// wpa2017's world: the 50 km cube, the paper's start and goal (its heights h are
+    /// z = h - 50 km), the straight line blocked by the threat peaks, both ends clear of them;
+    /// a short MWPA run finds a feasible path, smoothed by Dubins curves of 300 m.
+    #[test]
+    fn wpa_threats_is_the_papers_path_experiment() {
+        let s = Scenario::from_toml(builtin("wpa-threats").unwrap(), "builtin:wpa-threats").unwrap();
+        let b = s.world.bounds;
+        assert_eq!((b.min.to_array(), b.max.to_array()), ([0.0, 0.0, -50_000.0], [50_000.0, 50_000.0, 0.0]));
+        assert_eq!(s.start.to_array(), [3_000.0, 15_000.0, 40_000.0 - 50_000.0]);
+        assert_eq!(s.goal.to_array(), [30_000.0, 10_000.0, 10_000.0 - 50_000.0]);
+        let seabed = |x: f64, y: f64| s.world.terrain.elevation(x, y);
+        let d_safe = s.vehicle.safety_distance;
+        assert_eq!(d_safe, 500.0);
+        for p in [s.start, s.goal] {
+            assert!(p.z > seabed(p.x, p.y) + d_safe, "{p:?} is not clear of the seabed");
+        }
+        let blocked = (0..=1000).any(|i| {
+            let p = s.start + (s.goal - s.start) * (i as f64 / 1000.0);
+            p.z < seabed(p.x, p.y)
+        });
+        assert!(blocked, "the straight path must cross the threat terrain");
+        // The cap h_max = 45 km.
+        assert!(seabed(13_000.0, 22_000.0) <= -5_000.0);
+        assert_eq!((s.planner.id.as_str(), s.cost.model.as_str()), ("mwpa", "wpa2017"));
+        let req = PlanRequest { iterations: Some(15), population: Some(40), ..PlanRequest::default() };
+        let r = s.plan(&req, &mut |_| {}).unwrap();
+        let m = &r.missions[0];
+        assert!(m.feasible, "{}", m.reason);
+        assert_eq!(m.waypoints.len(), 32, "30 interior planes");
+        let smoothed = m.smoothed.as_ref().expect("the dubins smoother runs");
+        assert!(smoothed.len() >= 2);
     }
 }
