@@ -156,6 +156,18 @@ impl<'a> Context<'a> {
         f
     }
 
+    /// Whether `x` satisfies the objective's constraints ([`Objective::feasible`]). A check
+    /// costs about an evaluation and counts as one; `None` when the objective has no
+    /// constraints (not counted), past the evaluation budget, or once the run is interrupted.
+    pub fn feasible(&mut self, x: &[f64]) -> Option<bool> {
+        if self.exhausted() || self.interrupted {
+            return None;
+        }
+        let verdict = self.objective.feasible(x, &mut self.scratch)?;
+        self.evaluations += 1;
+        Some(verdict)
+    }
+
     /// Evaluates every row of `pop` into `out`, in parallel when it pays. Rows beyond the
     /// remaining evaluation budget get +inf and are not counted; so do the rows left when the
     /// run is interrupted, so the best point evaluated so far is kept and nothing more is

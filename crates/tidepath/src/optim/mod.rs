@@ -86,6 +86,14 @@ pub trait Objective: Sync {
             *v = clamp(*v, lo, hi);
         }
     }
+    /// Whether `x` satisfies the problem's constraints (a path: no collision, out-of-domain
+    /// waypoint or broken vehicle limit), for optimizers that act on feasibility, such as
+    /// wpa2017's Step 7 which replaces infeasible wolves. `None`: the objective has no
+    /// constraints beyond its box (benchmark functions), so nothing is infeasible. Costs about
+    /// one evaluation; [`Context::feasible`] counts it as one.
+    fn feasible(&self, _x: &[f64], _scratch: &mut Scratch) -> Option<bool> {
+        None
+    }
     /// True when one evaluation is costly enough (microseconds) that a population should be
     /// evaluated in parallel. Cheap analytic test functions say false.
     fn parallel_hint(&self) -> bool {

@@ -22,13 +22,14 @@
 //! ```
 //!
 //! F_min is the lead's cost and F_avg the pack's mean (finite) cost at the start of the
-//! calling phase. Step 7 (replace wolves whose path is infeasible by the best feasible wolf)
-//! is left out: an [`Objective`](super::Objective) reports only a cost, not feasibility (see
-//! docs/papers/wpa2017.md, A17). The engine is shared with `wpa` (`wolf.rs`).
+//! calling phase. Step 7 (section III.B): after renewal, every wolf whose path is infeasible
+//! (the objective's [`feasible`](super::Objective::feasible)) becomes a copy of the best
+//! feasible wolf; objectives without constraints skip it (docs/papers/wpa2017.md, A17). The
+//! engine is shared with `wpa` (`wolf.rs`).
 
 use super::wolf::{Adaptive, Pack, Variant};
 use super::wpa::WpaParams;
-use super::{Context, Optimizer, MAX_POPULATION};
+use super::MAX_POPULATION;
 use crate::error::Result;
 use crate::params::{field_error, Bound, Checked, Range};
 
@@ -63,6 +64,9 @@ crate::params! {
         /// Raid step update (eq. 25): false, s = w step_b for all raids of a calling phase
         /// (one update per iteration k); true, s <- w s before every raid from s = step_b.
         compound_raid_step: bool = false, Range::Flag, "tidepath (docs/papers/wpa2017.md)";
+        /// Step 7: after each iteration, wolves whose path is infeasible become copies of the
+        /// best feasible wolf (each moved wolf's check counts as an evaluation).
+        replace_infeasible: bool = true, Range::Flag, "wpa2017 section III.B, Step 7";
     }
     check = check_weights;
 }
@@ -114,42 +118,25 @@ impl MwpaParams {
     }
 }
 
-/// The modified wolf pack algorithm, built from checked parameters.
-#[derive(Clone, Debug)]
-pub struct Mwpa {
-    params: MwpaParams,
-    pack: Pack,
-}
+super::wolf::wolf_optimizer!(
+    /// The modified wolf pack algorithm, built from checked parameters.
+    Mwpa,
+    MwpaParams,
+    "mwpa"
+);
 
 impl Mwpa {
     pub fn new(params: Checked<MwpaParams>) -> Self {
         let params = params.into_inner();
         let adaptive = Adaptive { w_min: params.w_min, w_max: params.w_max, compound: params.compound_raid_step };
-        let variant = Variant { interactive: true, adaptive: Some(adaptive), decay: Some(params.c) };
+        let variant = Variant {
+            interactive: true,
+            adaptive: Some(adaptive),
+            decay: Some(params.c),
+            replace_infeasible: params.replace_infeasible,
+        };
         let pack = Pack::new(params.common().settings(), variant);
         Self { params, pack }
-    }
-
-    pub fn params(&self) -> &MwpaParams {
-        &self.params
-    }
-}
-
-impl Optimizer for Mwpa {
-    fn id(&self) -> &'static str {
-        "mwpa"
-    }
-
-    fn population(&self) -> usize {
-        self.params.population
-    }
-
-    fn init(&mut self, ctx: &mut Context<'_>) {
-        self.pack.init(ctx);
-    }
-
-    fn step(&mut self, ctx: &mut Context<'_>) {
-        self.pack.step(ctx);
     }
 }
 

@@ -16,6 +16,7 @@
 //! besieging  every wolf but the lead: x + factor * lambda * step_c * |G - x|, greedy
 //! renewal    R <- U{ceil(N/(2 beta)) .. floor(N/beta)} (at most N-1) worst wolves replaced by
 //!            uniform random wolves
+//! step 7     (MWPA) wolves whose path is infeasible become copies of the best feasible wolf
 //! ```
 //!
 //! Random draws, in order, per iteration: T; per scout visit (MWPA only) the two partner scouts
@@ -43,6 +44,9 @@ pub(crate) struct Variant {
     pub adaptive: Option<Adaptive>,
     /// MWPA's siege decay c (eq. 29); `None`: the original constant siege step.
     pub decay: Option<f64>,
+    /// wpa2017's Step 7: after renewal, every wolf whose path is infeasible becomes a copy of
+    /// the best feasible wolf (when the objective reports feasibility and one wolf is feasible).
+    pub replace_infeasible: bool,
 }
 
 /// MWPA's adaptive raid step: the weight range of eq. 26 and whether the weight compounds
@@ -69,6 +73,45 @@ pub(crate) struct Settings {
     pub beta: f64,
     pub h: usize,
 }
+
+/// Declares a wolf pack optimizer: the struct holding its checked parameters and its
+/// [`Pack`], and its [`Optimizer`](super::Optimizer) implementation, identical for `wpa` and
+/// `mwpa` (their constructors, which choose the [`Variant`], stay in their own files).
+macro_rules! wolf_optimizer {
+    ($(#[$meta:meta])* $name:ident, $params:ty, $id:literal) => {
+        $(#[$meta])*
+        #[derive(Clone, Debug)]
+        pub struct $name {
+            params: $params,
+            pack: super::wolf::Pack,
+        }
+
+        impl $name {
+            pub fn params(&self) -> &$params {
+                &self.params
+            }
+        }
+
+        impl super::Optimizer for $name {
+            fn id(&self) -> &'static str {
+                $id
+            }
+
+            fn population(&self) -> usize {
+                self.params.population
+            }
+
+            fn init(&mut self, ctx: &mut super::Context<'_>) {
+                self.pack.init(ctx);
+            }
+
+            fn step(&mut self, ctx: &mut super::Context<'_>) {
+                self.pack.step(ctx);
+            }
+        }
+    };
+}
+pub(crate) use wolf_optimizer;
 
 /// Number of scouts: a uniform integer in `[ceil(n/(alpha+1)), floor(n/alpha)]`, kept in
 /// `[0, n-1]` (the lead is never a scout).
@@ -198,6 +241,10 @@ pub(crate) struct Pack {
     trial: Population,
     trial_cost: Vec<f64>,
     row: Vec<f64>,
+    /// Step 7: each wolf's position when its feasibility was last checked, and the verdict
+    /// (`None`: not checked yet), so only wolves that moved are checked again.
+    checked_x: Population,
+    checked: Vec<Option<bool>>,
 }
 
 impl Pack {
@@ -223,6 +270,8 @@ impl Pack {
             trial: Population::zeros(0, 0),
             trial_cost: Vec::new(),
             row: Vec::new(),
+            checked_x: Population::zeros(0, 0),
+            checked: Vec::new(),
         }
     }
 
@@ -252,6 +301,8 @@ impl Pack {
         self.row = vec![0.0; dim];
         self.order = (0..n).collect();
         self.xi = 1.0;
+        self.checked_x = Population::zeros(n, dim);
+        self.checked = vec![None; n];
         self.rank();
     }
 
@@ -284,6 +335,48 @@ impl Pack {
         }
         self.besiege(ctx);
         self.renew(ctx);
+        if self.variant.replace_infeasible {
+            self.replace_infeasible(ctx);
+        }
+    }
+
+    /// Step 7 (wpa2017 section III.B): every wolf whose path violates a constraint becomes a
+    /// copy of the best feasible wolf (position and cost; the cost is a pure function of the
+    /// position, so nothing is re-evaluated). Each wolf that moved since its last check is
+    /// checked once (counted as an evaluation); with no feasible wolf, or an objective without
+    /// constraints, the pack is left as it is.
+    fn replace_infeasible(&mut self, ctx: &mut Context<'_>) {
+        let n = self.x.len();
+        for i in 0..n {
+            if self.checked[i].is_some() && self.checked_x.row(i) == self.x.row(i) {
+                continue;
+            }
+            if Self::halt(ctx) {
+                return;
+            }
+            match ctx.feasible(self.x.row(i)) {
+                Some(ok) => {
+                    self.checked[i] = Some(ok);
+                    self.checked_x.copy_row_from(i, &self.x, i);
+                }
+                // No constraints (benchmark functions), or the budget ran out.
+                None => return,
+            }
+        }
+        let best = (0..n)
+            .filter(|&i| self.checked[i] == Some(true))
+            .min_by(|&a, &b| cmp_cost(self.cost[a], self.cost[b]).then(a.cmp(&b)));
+        let Some(best) = best else { return };
+        self.row.copy_from_slice(self.x.row(best));
+        for i in 0..n {
+            if self.checked[i] == Some(false) {
+                self.x.row_mut(i).copy_from_slice(&self.row);
+                self.checked_x.row_mut(i).copy_from_slice(&self.row);
+                self.checked[i] = Some(true);
+                self.cost[i] = self.cost[best];
+            }
+        }
+        self.rank();
     }
 
     /// Scouting; false when the run must stop.
@@ -457,5 +550,125 @@ impl Pack {
             self.cost[i] = ctx.evaluate(self.x.row(i));
         }
         self.rank();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::optim::functions::{Function, FunctionObjective};
+    use crate::optim::{Objective, Scratch};
+
+    /// (x - 0.2)^2 + (y - 0.2)^2 on [0, 1]^2, feasible only where x >= 0.5: the unconstrained
+    /// optimum is infeasible.
+    struct HalfPlane;
+
+    impl Objective for HalfPlane {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn lower(&self) -> &[f64] {
+            &[0.0, 0.0]
+        }
+        fn upper(&self) -> &[f64] {
+            &[1.0, 1.0]
+        }
+        fn evaluate(&self, x: &[f64], _: &mut Scratch) -> f64 {
+            (x[0] - 0.2).powi(2) + (x[1] - 0.2).powi(2)
+        }
+        fn feasible(&self, x: &[f64], _: &mut Scratch) -> Option<bool> {
+            Some(x[0] >= 0.5)
+        }
+    }
+
+    fn pack(replace_infeasible: bool) -> Pack {
+        let settings = Settings {
+            population: 4,
+            t_max: 1,
+            omega: 50.0,
+            step_a: 0.01,
+            step_b: 0.02,
+            step_c: 0.005,
+            alpha: 4.0,
+            beta: 5.0,
+            h: 4,
+        };
+        Pack::new(settings, Variant { interactive: true, adaptive: None, decay: Some(0.99), replace_infeasible })
+    }
+
+    /// Puts wolves at `rows` and evaluates them, as `init` would have.
+    fn place(p: &mut Pack, ctx: &mut Context<'_>, rows: &[[f64; 2]]) {
+        p.init(ctx);
+        for (i, r) in rows.iter().enumerate() {
+            p.x.row_mut(i).copy_from_slice(r);
+        }
+        ctx.evaluate_population(&p.x, &mut p.cost);
+        p.rank();
+    }
+
+    #[test]
+    fn step_7_copies_the_best_feasible_wolf_over_infeasible_ones() {
+        let mut rng = crate::rng::run_rng(1, 0);
+        let mut ctx = Context::new(&HalfPlane, &mut rng, None, false, &[]);
+        let mut p = pack(true);
+        // Costs 0.0 (infeasible, the lead), 0.41 (feasible: 0.09 + 0.32), 0.25 (feasible:
+        // 0.25 + 0), 0.68 (infeasible: 0.04 + 0.64).
+        let rows = [[0.2, 0.2], [0.5, 0.2 + 0.32f64.sqrt()], [0.7, 0.2], [0.0, 1.0]];
+        place(&mut p, &mut ctx, &rows);
+        let before = ctx.evaluations();
+        p.replace_infeasible(&mut ctx);
+        // Four checks, each counted.
+        assert_eq!(ctx.evaluations(), before + 4);
+        let x: Vec<Vec<f64>> = p.x.rows().map(|r| r.to_vec()).collect();
+        assert_eq!(x, vec![vec![0.7, 0.2], rows[1].to_vec(), vec![0.7, 0.2], vec![0.7, 0.2]]);
+        assert!((p.cost[0] - 0.25).abs() < 1e-15 && p.cost[3] == p.cost[2], "{:?}", p.cost);
+        assert_eq!(p.lead, 0, "ties go to the lower index");
+        // Nothing moved: no wolf is checked again.
+        p.replace_infeasible(&mut ctx);
+        assert_eq!(ctx.evaluations(), before + 4);
+        // One wolf moves: only it is checked.
+        p.x.row_mut(1)[0] = 0.1;
+        p.replace_infeasible(&mut ctx);
+        assert_eq!(ctx.evaluations(), before + 5);
+        assert_eq!(p.x.row(1), &[0.7, 0.2]);
+    }
+
+    #[test]
+    fn step_7_leaves_the_pack_alone_without_a_feasible_wolf_or_constraints() {
+        let mut rng = crate::rng::run_rng(1, 0);
+        let mut ctx = Context::new(&HalfPlane, &mut rng, None, false, &[]);
+        let mut p = pack(true);
+        let rows = [[0.2, 0.2], [0.1, 0.9], [0.3, 0.3], [0.0, 1.0]];
+        place(&mut p, &mut ctx, &rows);
+        p.replace_infeasible(&mut ctx);
+        let x: Vec<Vec<f64>> = p.x.rows().map(|r| r.to_vec()).collect();
+        assert_eq!(x, rows.iter().map(|r| r.to_vec()).collect::<Vec<_>>());
+        // A benchmark function reports no feasibility: no check is made or counted.
+        let f = FunctionObjective::new(Function::Sphere, 2, 0.0, 1.0);
+        let mut rng = crate::rng::run_rng(1, 0);
+        let mut ctx = Context::new(&f, &mut rng, None, false, &[]);
+        let mut p = pack(true);
+        place(&mut p, &mut ctx, &rows);
+        let before = ctx.evaluations();
+        p.replace_infeasible(&mut ctx);
+        assert_eq!(ctx.evaluations(), before);
+    }
+
+    #[test]
+    fn step_7_runs_in_mwpa_only_and_keeps_the_run_feasible() {
+        // A whole run: with Step 7 every wolf ends feasible once one is; without it (WPA's
+        // skeleton) the pack keeps infeasible wolves that beat every feasible one.
+        for (replace, all_feasible) in [(true, true), (false, false)] {
+            let mut rng = crate::rng::run_rng(7, 0);
+            let mut ctx = Context::new(&HalfPlane, &mut rng, Some(5_000), false, &[]);
+            let mut p = pack(replace);
+            p.settings.population = 20;
+            p.init(&mut ctx);
+            for _ in 0..10 {
+                p.step(&mut ctx);
+            }
+            let feasible = p.x.rows().all(|r| r[0] >= 0.5);
+            assert_eq!(feasible, all_feasible, "replace_infeasible = {replace}");
+        }
     }
 }

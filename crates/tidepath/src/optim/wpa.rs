@@ -17,7 +17,7 @@
 //! (docs/papers/wpa2017.md, A9). The engine is shared with `mwpa` (`wolf.rs`).
 
 use super::wolf::{Pack, Settings, Variant};
-use super::{Context, Optimizer, MAX_POPULATION};
+use super::MAX_POPULATION;
 use crate::params::{Bound, Checked, Range};
 
 crate::params! {
@@ -83,40 +83,19 @@ impl WpaParams {
     }
 }
 
-/// The original wolf pack algorithm, built from checked parameters.
-#[derive(Clone, Debug)]
-pub struct Wpa {
-    params: WpaParams,
-    pack: Pack,
-}
+super::wolf::wolf_optimizer!(
+    /// The original wolf pack algorithm, built from checked parameters.
+    Wpa,
+    WpaParams,
+    "wpa"
+);
 
 impl Wpa {
     pub fn new(params: Checked<WpaParams>) -> Self {
         let params = params.into_inner();
-        let pack = Pack::new(params.settings(), Variant { interactive: false, adaptive: None, decay: None });
+        let variant = Variant { interactive: false, adaptive: None, decay: None, replace_infeasible: false };
+        let pack = Pack::new(params.settings(), variant);
         Self { params, pack }
-    }
-
-    pub fn params(&self) -> &WpaParams {
-        &self.params
-    }
-}
-
-impl Optimizer for Wpa {
-    fn id(&self) -> &'static str {
-        "wpa"
-    }
-
-    fn population(&self) -> usize {
-        self.params.population
-    }
-
-    fn init(&mut self, ctx: &mut Context<'_>) {
-        self.pack.init(ctx);
-    }
-
-    fn step(&mut self, ctx: &mut Context<'_>) {
-        self.pack.step(ctx);
     }
 }
 

@@ -148,6 +148,26 @@ impl Objective for PathObjective<'_> {
         total
     }
 
+    /// Every mission's path judged by the path assessment the cost models use (collisions,
+    /// domain and depth band, vehicle limits, current); a fleet's separation and arrival rules
+    /// are penalties, not constraints, and are not part of it.
+    fn feasible(&self, x: &[f64], scratch: &mut Scratch) -> Option<bool> {
+        let mut points = std::mem::take(&mut scratch.points);
+        let mut times = std::mem::take(&mut scratch.times);
+        let mut all = true;
+        for (i, e) in self.encodings.iter().enumerate() {
+            let (genes, speeds) = self.split(x, i);
+            e.decode_into(genes, &mut points);
+            if !self.model(i, speeds).assess(&points, &mut times).feasible() {
+                all = false;
+                break;
+            }
+        }
+        scratch.points = points;
+        scratch.times = times;
+        Some(all)
+    }
+
     fn repair(&self, x: &mut [f64]) {
         for (i, e) in self.encodings.iter().enumerate() {
             let (genes, speeds) = x[self.offsets[i]..self.offsets[i + 1]].split_at_mut(e.dim());
