@@ -308,8 +308,15 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
         let cost = m.cost.map_or("none".to_string(), |c| format!("{c:.6}"));
         println!("{indent}cost           {cost}  ({})", terms.join(", "));
         if let (Some(raw), Some(s)) = (m.raw_cost, &m.smoothed) {
+            // The planner's own polyline length beside the smoothed one printed below (wpa2017
+            // reports both: the optimizer's polyline and the Dubins-smoothed path).
+            let raw_length: f64 = m
+                .waypoints
+                .windows(2)
+                .map(|w| w[0].iter().zip(&w[1]).map(|(a, b)| (b - a) * (b - a)).sum::<f64>().sqrt())
+                .sum();
             println!(
-                "{indent}smoothed       {} -> {} waypoints; cost before smoothing {raw:.6}",
+                "{indent}smoothed       {} -> {} waypoints; before smoothing: cost {raw:.6}, length {raw_length:.1} m",
                 m.waypoints.len(),
                 s.len()
             );
