@@ -31,7 +31,16 @@ pub struct Context<'a> {
     interrupted: bool,
     /// Which rows of a parallel evaluation were evaluated (reused, so no allocation).
     done: Vec<bool>,
+    /// The measured time of one evaluation (ns, from the last population evaluated), to keep
+    /// small populations of cheap rows off the thread pool; `None` until one is measured.
+    row_ns: Option<f64>,
 }
+
+/// Estimated work (ns) below which a population is evaluated on the calling thread: handing
+/// rows to rayon's pool and waiting for them costs tens of microseconds (a futex wake and a
+/// wait), more than a wolf pack's five scouting candidates of a few microseconds each take.
+/// Which thread evaluates a row never changes its cost, so results do not depend on it.
+const PARALLEL_MIN_WORK_NS: f64 = 100_000.0;
 
 /// Rows of a cheap objective (an analytic test function, tens of nanoseconds) evaluated
 /// between two polls of the stop flag and the deadline (a poll costs about 25 ns).
@@ -69,6 +78,7 @@ impl<'a> Context<'a> {
             termination: None,
             interrupted: false,
             done: Vec::new(),
+            row_ns: None,
         }
     }
 
@@ -185,7 +195,10 @@ impl<'a> Context<'a> {
             out.fill(f64::INFINITY);
             return;
         }
-        let n = if self.parallel && budget > 1 {
+        let pooled =
+            self.parallel && budget > 1 && self.row_ns.is_none_or(|ns| ns * budget as f64 >= PARALLEL_MIN_WORK_NS);
+        let started = self.parallel.then(std::time::Instant::now);
+        let n = if pooled {
             // Each worker polls before each row; a row skipped after a stop is marked.
             let stopped = std::sync::atomic::AtomicBool::new(false);
             let done = &mut self.done;
@@ -242,6 +255,10 @@ impl<'a> Context<'a> {
             }
             n
         };
+        if let Some(t0) = started.filter(|_| n > 0) {
+            let threads = if pooled { rayon::current_num_threads().min(n) } else { 1 };
+            self.row_ns = Some(t0.elapsed().as_nanos() as f64 * threads as f64 / n as f64);
+        }
         for o in &mut out[n..] {
             *o = f64::INFINITY;
         }
