@@ -95,6 +95,7 @@ fn table(source: &str, labels: &[String], pso: &Rows, ga: &Rows) -> PaperTable {
                 mean: Some(mean),
                 std: Some(std),
                 zeros: Some(zeros),
+                ..PaperCell::default()
             });
         }
     }
@@ -204,6 +205,8 @@ pub(super) fn run(opts: &ReproduceOptions, progress: &(dyn Fn(usize, usize) + Sy
             paper: table(source, &labels, pso, ga),
             claims: checked,
             notes,
+            tables: Vec::new(),
+            scenario: None,
         });
     }
     Ok(outcomes)

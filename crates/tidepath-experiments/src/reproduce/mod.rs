@@ -6,8 +6,9 @@
 mod baselines;
 mod claims;
 mod report;
+mod wpa2017;
 
-pub use claims::{Claim, ClaimVerdict, Direction};
+pub use claims::{Claim, ClaimVerdict, Direction, Metric};
 pub use report::{PaperCell, PaperTable};
 
 use std::path::Path;
@@ -56,6 +57,11 @@ pub struct ExperimentOutcome {
     pub claims: Vec<(Claim, ClaimVerdict)>,
     /// Findings computed from the data that the table alone does not make obvious.
     pub notes: Vec<String>,
+    /// Further tables (heading, Markdown), after the main one: what the paper prints that is
+    /// not a cost (e.g. path length).
+    pub tables: Vec<(String, String)>,
+    /// The scenario of a scenario experiment, for its map figure (the planners' best paths).
+    pub scenario: Option<tidepath_io::scenario::Scenario>,
 }
 
 /// Progress callback: (runs finished, runs in total).
@@ -69,14 +75,24 @@ pub type RunPaper = fn(&ReproduceOptions, &ProgressFn<'_>) -> Result<Vec<Experim
 pub type Paper = Entry<RunPaper>;
 
 /// The reproduction table: adding a paper's reproduction is a file plus one line here.
-pub const PAPERS: &[Paper] = &[Entry {
-    id: "baselines",
-    description:
-        "PSO and GA (DE and a second GA reading for reference) on amfa2015's benchmark functions, Tables 2 and 4",
-    citation: "Liu et al. 2015 (amfa2015), Tables 1-4",
-    params: &[],
-    build: baselines::run,
-}];
+pub const PAPERS: &[Paper] = &[
+    Entry {
+        id: "baselines",
+        description:
+            "PSO and GA (DE and a second GA reading for reference) on amfa2015's benchmark functions, Tables 2 and 4",
+        citation: "Liu et al. 2015 (amfa2015), Tables 1-4",
+        params: &[],
+        build: baselines::run,
+    },
+    Entry {
+        id: "wpa2017",
+        description: "MWPA against PSO and GA on Table 2's functions (Table 4, also at equal evaluations), and \
+                      against WPA on the path problem (Table 5, Figs. 8-9)",
+        citation: "Zhang et al. 2017 (wpa2017), section IV, Tables 2-5",
+        params: &[],
+        build: wpa2017::run,
+    },
+];
 
 /// The reproductions as a registry: lists, "known: ..." errors.
 pub fn papers() -> Registry<RunPaper> {

@@ -21,6 +21,10 @@ pub struct PaperCell {
     pub std: Option<f64>,
     /// The paper's "0 times" column.
     pub zeros: Option<u32>,
+    /// The worst run, when the paper prints it.
+    pub worst: Option<f64>,
+    /// The mean wall time per run (s), when the paper prints it (on its own machine).
+    pub time_s: Option<f64>,
 }
 
 #[derive(Clone, Debug, Default)]
@@ -135,12 +139,20 @@ fn experiment_table(o: &ExperimentOutcome) -> String {
         rows.iter().map(|r| o.paper.cell(&r.problem, &r.planner).and_then(f).unwrap_or(f64::NAN)).collect()
     };
     let ours = |f: fn(&crate::table::PlannerRow) -> f64| rows.iter().map(f).collect::<Vec<f64>>();
+    let printed = |f: fn(&PaperCell) -> Option<f64>| o.paper.cells.iter().any(|c| f(c).is_some());
     let reference = c.planners.first().cloned().unwrap_or_default();
     let mut columns = vec![
         Column::new("problem", cells(&|r| r.problem.clone())),
         Column::new("planner", cells(&|r| r.planner.clone())),
         Column::numbers("best paper", paper(|p| p.best), 4),
         Column::numbers("best ours", ours(|r| r.best), 4),
+    ];
+    // Worst and time only where the paper prints them (amfa2015 does not).
+    if printed(|p| p.worst) {
+        columns.push(Column::numbers("worst paper", paper(|p| p.worst), 4));
+        columns.push(Column::numbers("worst ours", ours(|r| r.worst), 4));
+    }
+    columns.extend([
         Column::numbers("mean paper", paper(|p| p.mean), 4),
         Column::numbers("mean ours", ours(|r| r.mean), 4),
         Column::new(
@@ -153,15 +165,28 @@ fn experiment_table(o: &ExperimentOutcome) -> String {
         ),
         Column::numbers("std paper", paper(|p| p.std), 4),
         Column::numbers("std ours", ours(|r| r.std), 4),
-        Column::new(
-            "\"0\" paper",
-            cells(&|r| {
-                o.paper.cell(&r.problem, &r.planner).and_then(|c| c.zeros).map_or("—".into(), |z| of(z, o.paper.runs))
-            }),
-        ),
-        Column::new("f = 0 ours", cells(&|r| of(r.zeros_exact, Some(r.runs)))),
-        Column::new("f < 1e-300 ours", cells(&|r| of(r.zeros_tiny, Some(r.runs)))),
-    ];
+    ]);
+    if printed(|p| p.time_s) {
+        columns.push(Column::numbers("time paper (s)", paper(|p| p.time_s), 4));
+        columns.push(Column::numbers("time ours (s)", ours(|r| r.mean_wall_s), 4));
+        columns.push(Column::numbers("evaluations ours (mean)", ours(|r| r.mean_evaluations), 4));
+    }
+    // The "0" columns count runs at a function's optimum; scenarios have none.
+    if c.is_functions() {
+        columns.extend([
+            Column::new(
+                "\"0\" paper",
+                cells(&|r| {
+                    o.paper
+                        .cell(&r.problem, &r.planner)
+                        .and_then(|c| c.zeros)
+                        .map_or("—".into(), |z| of(z, o.paper.runs))
+                }),
+            ),
+            Column::new("f = 0 ours", cells(&|r| of(r.zeros_exact, Some(r.runs)))),
+            Column::new("f < 1e-300 ours", cells(&|r| of(r.zeros_tiny, Some(r.runs)))),
+        ]);
+    }
     // The marks, worded as in `compare`'s table.
     columns.push(Column::new(format!("vs {reference}"), crate::table::mark_cells(rows)));
     if c.reference.is_some() {
@@ -240,7 +265,7 @@ pub(super) fn stage(
 
     for o in outcomes {
         let sub = dir.join(&o.id);
-        output::stage_results(out, "--out", &sub, &o.comparison, None, figures)?;
+        output::stage_results(out, "--out", &sub, &o.comparison, o.scenario.as_ref(), figures)?;
         let _ = writeln!(md, "## {}\n", o.title);
         let _ = writeln!(md, "{}\n", o.setup);
         let paper_runs = o.paper.runs.map_or(String::new(), |n| format!(" ({n} runs per cell)"));
@@ -258,6 +283,9 @@ pub(super) fn stage(
             let _ = writeln!(md, "**{note}**\n");
         }
         md.push_str(&experiment_table(o));
+        for (heading, table) in &o.tables {
+            let _ = writeln!(md, "\n### {heading}\n\n{table}");
+        }
         if !o.notes.is_empty() {
             let _ = writeln!(md, "\n### Findings\n");
             for n in &o.notes {
@@ -277,6 +305,9 @@ pub(super) fn stage(
             let _ = writeln!(md, "- {}: **{}**{detail}", claim.text, verdict.label());
         }
         let _ = writeln!(md, "\n![convergence]({id}/convergence.svg)\n\n![final costs]({id}/boxplot.svg)\n", id = o.id);
+        if o.scenario.is_some() {
+            let _ = writeln!(md, "![best path of each planner]({}/paths.svg)\n", o.id);
+        }
     }
     out.stage_in("--out", dir, "REPORT.md", md.as_bytes())
 }
@@ -342,6 +373,8 @@ mod tests {
             paper: PaperTable::default(),
             claims: Vec::new(),
             notes: Vec::new(),
+            tables: Vec::new(),
+            scenario: None,
         };
         let paper = Paper { id: "test", description: "test", citation: "", params: &[], build: |_, _| Ok(Vec::new()) };
         let dir = tempfile::tempdir().unwrap();
@@ -395,6 +428,7 @@ mod tests {
             mean: Some(1e-3),
             std: Some(1e-3),
             zeros: Some(zeros),
+            ..PaperCell::default()
         };
         let outcome = ExperimentOutcome {
             id: "t2".into(),
@@ -408,6 +442,8 @@ mod tests {
             },
             claims: vec![(claim, verdict)],
             notes: Vec::new(),
+            tables: Vec::new(),
+            scenario: None,
         };
         let opts =
             ReproduceOptions { runs: 2, master_seed: 1, jobs: 1, reference: None, stop: None, time_limit_s: None };
