@@ -606,6 +606,116 @@ mod tests {
         p.rank();
     }
 
+    /// x^2 + y^2 on [-10, 10]^2, steps of 1 (step_a, step_b) and 0.5 (step_c) per dimension,
+    /// d_near = 20 / 20 = 1; wolves: the lead at (0.1, 0), then (2, 2), (5, 5), (-6, 6).
+    fn sphere_pack(ctx: &mut Context<'_>, variant: Variant) -> Pack {
+        let settings = Settings {
+            population: 4,
+            t_max: 10,
+            omega: 20.0,
+            step_a: 0.05,
+            step_b: 0.05,
+            step_c: 0.025,
+            alpha: 3.0,
+            beta: 2.0,
+            h: 4,
+        };
+        let mut p = Pack::new(settings, variant);
+        place(&mut p, ctx, &[[0.1, 0.0], [2.0, 2.0], [5.0, 5.0], [-6.0, 6.0]]);
+        p
+    }
+
+    const WPA: Variant = Variant { interactive: false, adaptive: None, decay: None, replace_infeasible: false };
+
+    #[test]
+    fn scouting_moves_a_scout_to_its_best_direction_until_it_beats_the_lead() {
+        let f = FunctionObjective::new(Function::Sphere, 2, -10.0, 10.0);
+        let mut rng = crate::rng::run_rng(1, 0);
+        let mut ctx = Context::new(&f, &mut rng, None, false, &[]);
+        let mut p = sphere_pack(&mut ctx, WPA);
+        assert_eq!((scout_count(4, 3.0, 0.5), p.lead, p.order[1]), (1, 0, 1));
+        let before = ctx.evaluations();
+        assert!(p.scout(&mut ctx, 1));
+        // Round 1 from (2, 2): x + sin(2 pi p/4) = (3, 3) 18, (2, 2) 8, (1, 1) 2, (2, 2) 8: to
+        // (1, 1). Round 2: (2, 2), (1, 1), (0, 0) 0, (1, 1): (0, 0) beats the lead (0.01) and
+        // scouting ends: 8 evaluations.
+        assert_eq!(ctx.evaluations() - before, 8);
+        assert_eq!(p.x.row(1), &[0.0, 0.0]);
+        assert_eq!((p.cost[1], p.lead), (0.0, 1));
+        // The others did not move.
+        assert_eq!([p.x.row(2), p.x.row(3)], [&[5.0, 5.0][..], &[-6.0, 6.0][..]]);
+    }
+
+    #[test]
+    fn calling_raids_each_ferocious_wolf_to_d_near_or_past_the_lead() {
+        let f = FunctionObjective::new(Function::Sphere, 2, -10.0, 10.0);
+        let mut rng = crate::rng::run_rng(1, 0);
+        let mut ctx = Context::new(&f, &mut rng, None, false, &[]);
+        let mut p = sphere_pack(&mut ctx, WPA);
+        let before = ctx.evaluations();
+        assert!(p.call(&mut ctx, 1));
+        // (5, 5) raids by 1 per dimension to (1, 1): mean distance to (0.1, 0) 0.95 <= d_near.
+        assert_eq!(p.x.row(2), &[1.0, 1.0]);
+        // (-6, 6) raids to (-1, 1) (distance 1.05) and on to (0, 0), which beats the lead.
+        assert_eq!(p.x.row(3), &[0.0, 0.0]);
+        assert_eq!((p.lead, p.cost[3]), (3, 0.0));
+        assert_eq!(ctx.evaluations() - before, 4 + 6);
+        // T_max caps the raids of a phase: one raid each.
+        let mut rng = crate::rng::run_rng(1, 0);
+        let mut ctx = Context::new(&f, &mut rng, None, false, &[]);
+        let mut p = sphere_pack(&mut ctx, WPA);
+        p.settings.t_max = 1;
+        p.call(&mut ctx, 1);
+        assert_eq!([p.x.row(2), p.x.row(3)], [&[4.0, 4.0][..], &[-5.0, 5.0][..]]);
+    }
+
+    #[test]
+    fn the_siege_moves_each_wolf_along_one_scaled_step_and_keeps_only_improvements() {
+        let f = FunctionObjective::new(Function::Sphere, 2, -10.0, 10.0);
+        let mut rng = crate::rng::run_rng(3, 0);
+        let mut ctx = Context::new(&f, &mut rng, None, false, &[]);
+        let mwpa = Variant { decay: Some(0.9), ..WPA };
+        let mut p = sphere_pack(&mut ctx, mwpa);
+        let (x0, c0) = (p.x.clone(), p.cost.clone());
+        p.besiege(&mut ctx);
+        assert_eq!(p.xi, 0.9);
+        assert_eq!(p.x.row(0), x0.row(0), "the lead does not move");
+        let mut moved = 0;
+        for i in 1..4 {
+            let (old, new) = (x0.row(i), p.x.row(i));
+            if old == new {
+                continue;
+            }
+            moved += 1;
+            assert!(p.cost[i] < c0[i]);
+            // x' = x + xi lambda step_c |G - x| with one lambda in [-1, 1] for both dimensions.
+            let lambdas: Vec<f64> =
+                (0..2).map(|d| (new[d] - old[d]) / (0.9 * 0.5 * (x0.row(0)[d] - old[d]).abs())).collect();
+            assert!((lambdas[0] - lambdas[1]).abs() < 1e-12 && lambdas[0].abs() <= 1.0, "{lambdas:?}");
+        }
+        assert!(moved > 0, "with these draws some wolf improves");
+    }
+
+    #[test]
+    fn renewal_replaces_only_the_worst_wolves() {
+        let f = FunctionObjective::new(Function::Sphere, 2, -10.0, 10.0);
+        for seed in 0..20 {
+            let mut rng = crate::rng::run_rng(seed, 0);
+            let mut ctx = Context::new(&f, &mut rng, None, false, &[]);
+            let mut p = sphere_pack(&mut ctx, WPA);
+            let x0 = p.x.clone();
+            let before = ctx.evaluations();
+            p.renew(&mut ctx);
+            let renewed: Vec<usize> = (0..4).filter(|&i| p.x.row(i) != x0.row(i)).collect();
+            // N = 4, beta = 2: R in [1, 2]; the two worst are (-6, 6) and (5, 5).
+            assert!(matches!(renewed.as_slice(), [3] | [2, 3]), "seed {seed}: {renewed:?}");
+            assert_eq!(ctx.evaluations() - before, renewed.len() as u64);
+            for &i in &renewed {
+                assert_eq!(p.cost[i], p.x.row(i).iter().map(|v| v * v).sum::<f64>());
+            }
+        }
+    }
+
     #[test]
     fn step_7_copies_the_best_feasible_wolf_over_infeasible_ones() {
         let mut rng = crate::rng::run_rng(1, 0);
