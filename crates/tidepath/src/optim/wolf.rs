@@ -681,13 +681,13 @@ mod tests {
         assert_eq!(p.xi, 0.9);
         assert_eq!(p.x.row(0), x0.row(0), "the lead does not move");
         let mut moved = 0;
-        for i in 1..4 {
+        for (i, &c) in c0.iter().enumerate().skip(1) {
             let (old, new) = (x0.row(i), p.x.row(i));
             if old == new {
                 continue;
             }
             moved += 1;
-            assert!(p.cost[i] < c0[i]);
+            assert!(p.cost[i] < c);
             // x' = x + xi lambda step_c |G - x| with one lambda in [-1, 1] for both dimensions.
             let lambdas: Vec<f64> =
                 (0..2).map(|d| (new[d] - old[d]) / (0.9 * 0.5 * (x0.row(0)[d] - old[d]).abs())).collect();
