@@ -302,6 +302,8 @@ fn run_counts_at_the_edge_of_the_integers_are_refused() {
     }
     let r = run(dir.path(), &["bench", "functions", "--algos", "pso", "--funcs", "sphere", "--evaluations", "0"]);
     refused(&r, &["--evaluations", "at least 1"]);
+    let r = run(dir.path(), &["bench", "functions", "--algos", "pso", "--funcs", "sphere", "--preset", "wpa2071"]);
+    refused(&r, &["--preset", "unknown preset 'wpa2071'", "known: wpa2017"]);
     assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none(), "files left behind");
 }
 

@@ -52,6 +52,11 @@ pub struct FunctionsArgs {
     /// Population size for every optimizer (default: each optimizer's own).
     #[arg(long)]
     pub population: Option<usize>,
+    /// A paper's parameter set for the optimizers it covers (`wpa2017`: Table 3 for mwpa, wpa,
+    /// pso and ga; `amfa2015`: pso and ga); the others keep their defaults. `--population`
+    /// still overrides it.
+    #[arg(long)]
+    pub preset: Option<String>,
     /// Evaluations per run.
     #[arg(long, default_value_t = 60_000)]
     pub evaluations: u64,
@@ -128,8 +133,13 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
     }
     // Memory before any allocation: every optimizer's population times the largest dimension.
     let largest = problems.iter().map(|p| p.dim).max().unwrap_or(0);
+    let preset = |id: &str| match &args.preset {
+        Some(p) => tidepath::planner::presets::preset_params(p, id),
+        None => Ok(None),
+    };
+    let factory = |id: &str| tidepath::planner::build_optimizer(id, preset(id)?.as_ref(), args.population);
     for id in &args.algos {
-        let opt = tidepath::planner::build_optimizer(id, None, args.population)?;
+        let opt = factory(id)?;
         tidepath::optim::check_memory(opt.population(), largest)?;
     }
     let budget = RunBudget {
@@ -149,7 +159,7 @@ fn functions(args: &FunctionsArgs) -> Result<Outcome, Error> {
     let stop = crate::stop_flag();
     let on_done = |n| bar.set(n);
     let control = RunControl { jobs, stop: Some(&stop), on_done: &on_done };
-    let result = compare_functions(&problems, &args.algos, args.runs, args.seed, &budget, control, None);
+    let result = compare_functions(&problems, &args.algos, args.runs, args.seed, &budget, control, Some(&factory));
     bar.finish();
     let c = result?;
     if let Some(dir) = &args.out {

@@ -15,6 +15,7 @@ pub mod hybrid;
 pub mod hybrid_astar;
 mod objective;
 mod optimizer_planner;
+pub mod presets;
 pub mod raster_search;
 pub mod reachability;
 pub mod registry;

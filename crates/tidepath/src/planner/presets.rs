@@ -1,0 +1,87 @@
+//! Named parameter sets of the papers: `bench functions --preset wpa2017` runs each optimizer
+//! with the values a paper used for its benchmark tables (where the paper gives a planner's
+//! values; other planners keep their defaults). The values themselves are declared once, as
+//! the parameter structs' constructors (`MwpaParams::wpa2017()`, ...); this table only names
+//! them. Adding a preset is one entry.
+
+use crate::error::Result;
+use crate::optim::ga::GaParams;
+use crate::optim::mwpa::MwpaParams;
+use crate::optim::pso::PsoParams;
+use crate::optim::wpa::WpaParams;
+use crate::registry::{Entry, Registry};
+
+/// A preset's parameters for a planner id, as the TOML table a scenario would write; `None`
+/// when the preset has none for that planner.
+pub type PresetFor = fn(&str) -> Option<toml::Table>;
+
+pub const PRESETS: &[Entry<PresetFor>] = &[
+    Entry {
+        id: "wpa2017",
+        description: "wpa2017's benchmark setting (Table 3): mwpa, wpa, pso, ga",
+        citation: "Zhang et al. 2017 (wpa2017), Table 3 (readings in docs/papers/wpa2017.md A12, A13)",
+        params: &[],
+        build: wpa2017,
+    },
+    Entry {
+        id: "amfa2015",
+        description: "amfa2015's baseline setting (Tables 1-4): pso, ga",
+        citation: "Liu et al. 2015 (amfa2015), section 5",
+        params: &[],
+        build: amfa2015,
+    },
+];
+
+fn wpa2017(planner: &str) -> Option<toml::Table> {
+    Some(match planner {
+        "mwpa" => MwpaParams::wpa2017().to_table(),
+        "wpa" => WpaParams::wpa2017().to_table(),
+        "pso" => PsoParams::wpa2017().to_table(),
+        "ga" => GaParams::wpa2017().to_table(),
+        _ => return None,
+    })
+}
+
+fn amfa2015(planner: &str) -> Option<toml::Table> {
+    Some(match planner {
+        "pso" => PsoParams::amfa2015().to_table(),
+        "ga" => GaParams::amfa2015().to_table(),
+        _ => return None,
+    })
+}
+
+/// The presets as a registry: lists and "known: ..." errors.
+pub fn presets() -> Registry<PresetFor> {
+    Registry::new("preset", "--preset", "tidepath bench functions --help", PRESETS)
+}
+
+/// The parameters preset `id` gives `planner`, if any.
+pub fn preset_params(id: &str, planner: &str) -> Result<Option<toml::Table>> {
+    Ok((presets().get(id)?.build)(planner))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_builds_its_planners_from_the_declared_values() {
+        for e in PRESETS {
+            let mut any = false;
+            for p in crate::planner::registry().entries() {
+                if let Some(t) = (e.build)(p.id) {
+                    any = true;
+                    crate::planner::build_optimizer(p.id, Some(&t), None)
+                        .unwrap_or_else(|err| panic!("{} for {}: {err}", e.id, p.id));
+                }
+            }
+            assert!(any, "{} names no planner", e.id);
+        }
+        let t = preset_params("wpa2017", "mwpa").unwrap().unwrap();
+        assert_eq!(t["population"].as_integer(), Some(100));
+        assert_eq!(t["omega"].as_float(), Some(500.0));
+        assert_eq!(preset_params("wpa2017", "de").unwrap(), None);
+        let e = preset_params("nope", "pso").unwrap_err().to_string();
+        assert!(e.starts_with("--preset: unknown preset 'nope' (known: wpa2017, amfa2015"), "{e}");
+    }
+}
