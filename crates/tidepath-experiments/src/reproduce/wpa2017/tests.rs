@@ -74,7 +74,11 @@ fn table4_claims_take_the_paper_s_side() {
         }
         assert!(!c.text.contains("wpa ") && c.a != "wpa" && c.b != "wpa");
     }
-    assert!(claims[0].text.starts_with("PSO reaches lower costs than MWPA on easom (D = 2"), "{}", claims[0].text);
+    assert_eq!(
+        claims[3].text,
+        "GA reaches lower costs than MWPA on trid (D = 6; the paper's means -49.9996 against -49.9995, the \
+         low-dimension converse)"
+    );
     assert_eq!(claims[9].text, "MWPA reaches lower costs than GA on quadric (D = 120)");
 }
 
@@ -114,6 +118,9 @@ fn a_tiny_run_has_every_experiment_planner_and_claim() {
         assert_eq!(o.claims.len(), 10);
         assert!(o.claims.iter().all(|(_, v)| matches!(v, ClaimVerdict::Undecidable { runs: (2, 2), .. })));
         assert!(o.notes[0].starts_with("Mean evaluations per run: easom-d2: mwpa "), "{}", o.notes[0]);
+        assert!(o.notes[1]
+            .starts_with("Mean distance to the optimum, f - f*, where f* is not 0: easom-d2 (f* = -1): mwpa "));
+        assert!(o.notes[1].contains("; trid-d6 (f* = -50): mwpa ") && !o.notes[1].contains("sphere"), "{}", o.notes[1]);
     }
     // Own budgets: the wolf packs stop after 2 iterations, PSO and GA after 3 generations of 6
     // (the GA's elite is not evaluated again).
@@ -144,10 +151,12 @@ fn a_tiny_run_has_every_experiment_planner_and_claim() {
     assert_eq!(path.comparison.reference_planner.as_deref(), Some("theta-star"));
     assert!(path.scenario.is_some());
     let metrics: Vec<Metric> = path.claims.iter().map(|(c, _)| c.metric).collect();
-    assert_eq!(metrics, [Metric::Length, Metric::Length, Metric::Time, Metric::Cost]);
+    assert_eq!(metrics, [Metric::Length, Metric::Cost, Metric::Length, Metric::Cost, Metric::Time]);
+    assert!(path.claims[0].0.text.contains("polyline") && path.claims[2].0.text.contains("Dubins"));
     assert!(path.claims.iter().all(|(c, v)| c.a == "mwpa" && c.b == "wpa" && v.p().is_some()));
     let (heading, table) = &path.tables[0];
     assert!(heading.starts_with("Table 5 beside ours"));
+    assert!(table.starts_with("| planner | length paper (km) | polyline ours (km) | Dubins ours (km) |"), "{table}");
     let mwpa = table.lines().find(|l| l.starts_with("| mwpa |")).unwrap();
     assert!(mwpa.contains("| 72.25 |") && mwpa.contains("| 4.371 |"), "{mwpa}");
 
