@@ -149,14 +149,14 @@ pub(super) fn experiment(
     }
     let name = scenario.name.clone();
     let claim = |text: &str, metric: Metric| Claim::lower(&name, "mwpa", "wpa", text.to_string()).on(metric);
-    let lengths = |p: &str| of_polylines(&polylines, &c, p, |p| p.length_km);
-    let costs = |p: &str| of_polylines(&polylines, &c, p, |p| p.cost);
     let mut claims = Vec::new();
     // On the polyline (what the optimizers search), from values the records do not keep.
-    let on_polyline: [(Claim, &dyn Fn(&str) -> Vec<f64>); 2] = [
+    let length: fn(&Polyline) -> f64 = |p| p.length_km;
+    let cost: fn(&Polyline) -> f64 = |p| p.cost;
+    for (claim, value) in [
         (
             claim("MWPA finds shorter paths than WPA (the optimizer's polyline, before smoothing)", Metric::Length),
-            &lengths,
+            length,
         ),
         (
             claim(
@@ -164,11 +164,10 @@ pub(super) fn experiment(
                  convergence precision\", section IV.B)",
                 Metric::Cost,
             ),
-            &costs,
+            cost,
         ),
-    ];
-    for (claim, values) in on_polyline {
-        let v = claim.judge(&values("mwpa"), &values("wpa"));
+    ] {
+        let v = claim.judge(&of_polylines(&polylines, &c, "mwpa", value), &of_polylines(&polylines, &c, "wpa", value));
         claims.push((claim, v));
     }
     // On the smoothed path the records describe.
