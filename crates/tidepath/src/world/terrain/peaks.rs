@@ -63,13 +63,24 @@ impl Peak {
 
     /// h exp(-(dx/sx)^2 - (dy/sy)^2). Both the point elevation and the rectangle bound go through
     /// this one expression so that, at a point, the bound rounds exactly like the value.
+    ///
+    /// Beyond FAR_EXPONENT the term is below 1e-26 of the peak's height and is taken as 0
+    /// without calling exp, which is a third of a path evaluation's time on a peak seabed
+    /// (wpa-threats); for any seabed deeper than a micrometre the sum is unchanged to the bit.
     #[inline]
     fn term(&self, dx: f64, dy: f64) -> f64 {
         let u = dx / self.sigma_x;
         let v = dy / self.sigma_y;
-        self.height * (-(u * u) - v * v).exp()
+        let e = u * u + v * v;
+        if e > FAR_EXPONENT {
+            return 0.0;
+        }
+        self.height * (-e).exp()
     }
 }
+
+/// Exponent beyond which a peak's term is taken as 0 (exp(-60) = 8.8e-27).
+const FAR_EXPONENT: f64 = 60.0;
 
 impl GaussianPeaks {
     /// The terrain of wpa2017 eq. 1 from its own parameters: base h0, peaks given as
