@@ -73,7 +73,7 @@ pub(super) fn run_scaled(
 ) -> Result<Vec<ExperimentOutcome>> {
     let runs = opts.runs as usize;
     let per_functions = paper::FUNCTIONS.len() * PLANNERS.len() * runs;
-    let total = 2 * per_functions + 2 * runs;
+    let total = 2 * per_functions + path::PLANNERS.len() * runs;
     let mut outcomes = Vec::new();
     let own = functions_at_own_budgets(opts, scale, &|n| progress(n, total))?;
     let budgets = equal_budgets(&own.comparison);

@@ -20,7 +20,19 @@ use tidepath_io::scenario::Scenario;
 
 /// The built-in scenario of the paper's path experiment.
 pub const SCENARIO: &str = "wpa-threats";
-const PLANNERS: [&str; 2] = ["mwpa", "wpa"];
+/// MWPA without Step 7 (`replace_infeasible = false`): not in the paper; it measures what the
+/// paper's constraint handling does (docs/papers/wpa2017.md, A17) and takes part in no claim.
+const MWPA_NO_STEP7: &str = "mwpa-no-step7";
+pub(super) const PLANNERS: [&str; 3] = ["mwpa", "wpa", MWPA_NO_STEP7];
+
+/// The scenario and the planner id a row of the table runs.
+fn setup_of<'s>(row: &str, scenario: &'s Scenario, no_step7: &'s Scenario) -> (&'s Scenario, &'static str) {
+    match row {
+        MWPA_NO_STEP7 => (no_step7, "mwpa"),
+        "wpa" => (scenario, "wpa"),
+        _ => (scenario, "mwpa"),
+    }
+}
 
 /// Length of a polyline (m).
 pub(super) fn polyline_length_m(points: &[[f64; 3]]) -> f64 {
@@ -41,11 +53,12 @@ struct Polyline {
 /// One run: the record `compare` would keep, and the optimizer's polyline.
 fn one_run(
     scenario: &Scenario,
+    planner: &str,
     budget: &RunBudget,
     t: &Task,
     stop: Option<Arc<AtomicBool>>,
 ) -> Result<(RunRecord, Polyline)> {
-    let mut req = request(budget, &t.planner, t.seed);
+    let mut req = request(budget, planner, t.seed);
     req.stop = stop;
     let r: PlanReport = scenario.plan(&req, &mut |_| {})?;
     let first = r.missions.first().filter(|m| m.waypoints.len() >= 2);
@@ -103,6 +116,13 @@ pub(super) fn experiment(
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<ExperimentOutcome> {
     let scenario = tidepath_io::scenario::load(SCENARIO)?;
+    let mut no_step7 = scenario.clone();
+    no_step7
+        .planner
+        .params
+        .entry("mwpa".into())
+        .or_default()
+        .insert("replace_infeasible".into(), toml::Value::Boolean(false));
     let planners: Vec<String> = super::strings(&PLANNERS);
     let budget = RunBudget {
         iterations: scale.path_iterations,
@@ -117,7 +137,8 @@ pub(super) fn experiment(
     let start = Instant::now();
     let control = RunControl { jobs: opts.jobs, stop: opts.stop.as_ref(), on_done: progress };
     let records = execute(&all, control, |t| {
-        let (record, polyline) = one_run(&scenario, &budget, t, opts.stop.clone())?;
+        let (s, planner) = setup_of(&t.planner, &scenario, &no_step7);
+        let (record, polyline) = one_run(s, planner, &budget, t, opts.stop.clone())?;
         polylines.lock().unwrap_or_else(|e| e.into_inner()).push(polyline);
         Ok(record)
     })?;
@@ -194,7 +215,8 @@ pub(super) fn experiment(
              our Gaussian peaks (the paper prints only Figure 2; docs/papers/wpa2017.md, A2). Both planners with the \
              paper's path parameters: N = {population} wolves, K_max = {iterations} iterations, T_max = 30, ω = 50, \
              α = 4, β = 5, step_a/b/c = 0.2/0.4/0.1 km; then the Dubins smoother (r_min = 300 m, Step 9). {} runs \
-             each. The table's costs are the smoothed paths'. Table 5's \"m\" are kilometres (A16). Time is each \
+             each. The third row, `{MWPA_NO_STEP7}`, is MWPA without Step 7 (ours, not in the paper), to show what \
+             the paper's constraint handling does; it takes part in no claim. The table's costs are the smoothed paths'. Table 5's \"m\" are kilometres (A16). Time is each \
              run's wall time, smoothing included; it depends on the machine (the paper's: MATLAB on a 2.2 GHz Core i3).",
             opts.runs
         ),
@@ -323,11 +345,29 @@ fn notes(c: &Comparison, polylines: &[Polyline]) -> Vec<String> {
     }
     let evals: Vec<String> = c.rows.iter().map(|r| format!("{} {:.0}", r.planner, r.mean_evaluations)).collect();
     notes.push(format!(
-        "Both planners run the same iterations but not the same evaluations (mean per run: {}): MWPA's wolves \
-         close in cost to the lead take short raids and stop early, so its time advantage, if any, is partly \
-         fewer evaluations.",
+        "The planners run the same iterations but not the same evaluations (mean per run: {}; Step 7's \
+         feasibility checks count as evaluations), so a difference in time is partly a difference in work.",
         evals.join(", ")
     ));
+    if let (Some(with), Some(without)) = (of("mwpa", |p| p.cost), of(MWPA_NO_STEP7, |p| p.cost)) {
+        let test = Claim::lower(&c.problems[0], MWPA_NO_STEP7, "mwpa", String::new()).judge(
+            &of_polylines(polylines, c, MWPA_NO_STEP7, |p| p.cost),
+            &of_polylines(polylines, c, "mwpa", |p| p.cost),
+        );
+        let smoothed = |p: &str| c.rows.iter().find(|r| r.planner == p).map_or(f64::NAN, |r| r.mean);
+        notes.push(format!(
+            "Step 7 (replace every infeasible wolf by the best feasible one): MWPA's mean polyline cost is {} with it \
+             and {} without it ({MWPA_NO_STEP7}), smoothed {} and {}; MWPA without Step 7 against MWPA, on the \
+             polyline cost: {}{}. Copying one wolf over every infeasible one leaves the pack with few distinct \
+             wolves, and scouting, raiding and besieging move a wolf only relative to the others.",
+            num(with),
+            num(without),
+            num(smoothed("mwpa")),
+            num(smoothed(MWPA_NO_STEP7)),
+            test.label(),
+            test.p().map_or(String::new(), |p| format!(" (p = {p:.3e})"))
+        ));
+    }
     if let Some(r) = &c.reference {
         notes.push(format!(
             "The gap column is against {} (cost {}), a grid search on the same cost model run once; it is no \

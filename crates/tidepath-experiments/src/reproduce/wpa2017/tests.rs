@@ -107,8 +107,8 @@ fn a_tiny_run_has_every_experiment_planner_and_claim() {
     let ids: Vec<&str> = outcomes.iter().map(|o| o.id.as_str()).collect();
     assert_eq!(ids, ["table4-functions", "table4-equal-evaluations", "table5-path"]);
     let progress = progress.into_inner().unwrap();
-    assert_eq!(progress.iter().map(|p| p.1).max(), Some(2 * 5 * 4 * 2 + 2 * 2));
-    assert_eq!(progress.iter().map(|p| p.0).max(), Some(2 * 5 * 4 * 2 + 2 * 2));
+    assert_eq!(progress.iter().map(|p| p.1).max(), Some(2 * 5 * 4 * 2 + 3 * 2));
+    assert_eq!(progress.iter().map(|p| p.0).max(), Some(2 * 5 * 4 * 2 + 3 * 2));
 
     let (own, equal, path) = (&outcomes[0], &outcomes[1], &outcomes[2]);
     for o in [own, equal] {
@@ -143,9 +143,10 @@ fn a_tiny_run_has_every_experiment_planner_and_claim() {
     }
     assert!(equal.setup.contains(&format!("easom-d2 {}", budgets[0].1)), "{}", equal.setup);
 
-    assert_eq!(path.comparison.planners, ["mwpa", "wpa"]);
+    assert_eq!(path.comparison.planners, ["mwpa", "wpa", "mwpa-no-step7"]);
+    assert!(path.notes.iter().any(|n| n.starts_with("Step 7 (replace every infeasible wolf")), "{:?}", path.notes);
     assert_eq!(path.comparison.problems, [path::SCENARIO]);
-    assert_eq!(path.comparison.records.len(), 4);
+    assert_eq!(path.comparison.records.len(), 6);
     assert!(path.comparison.records.iter().all(|r| r.iterations == 1 && r.length_m.is_some()));
     assert_eq!(path.comparison.smoother.as_ref().map(|s| s.id.as_str()), Some("dubins"));
     assert_eq!(path.comparison.reference_planner.as_deref(), Some("theta-star"));
