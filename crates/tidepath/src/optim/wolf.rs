@@ -145,6 +145,16 @@ pub fn distance(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| (x - y).abs()).sum::<f64>() / a.len().max(1) as f64
 }
 
+/// The directions p in 1..=h that move a wolf: sin(2 pi p/h) is 0 exactly when h divides 2p
+/// (p = h/2 and p = h), and such a candidate is the wolf itself, which can never be strictly
+/// better than it is. The paper's loop evaluates them; tidepath does not, which changes no
+/// move a wolf makes (in floating point sin(pi) is 1.2e-16, a shift below the last bit of any
+/// coordinate that is not within 1e-16 of 0) and saves h/2 evaluations in every h of
+/// scouting's direction candidates when h is even.
+pub fn moving_directions(h: usize) -> Vec<usize> {
+    (1..=h).filter(|&p| (2 * p) % h != 0).collect()
+}
+
 /// Scouting direction p of h (eq. 22 read as sin(2 pi p/h)): `out = x + sin(2 pi p/h) step_a`.
 pub fn direction(x: &[f64], step_a: &[f64], p: usize, h: usize, out: &mut [f64]) {
     let s = (2.0 * PI * p as f64 / h as f64).sin();
@@ -228,7 +238,9 @@ pub(crate) struct Pack {
     step_b: Vec<f64>,
     step_c: Vec<f64>,
     d_near: f64,
-    /// Scouting candidates: h rows (h + 1 for MWPA).
+    /// The scouting directions p in 1..=h whose sin(2 pi p/h) is not 0 ([`moving_directions`]).
+    directions: Vec<usize>,
+    /// Scouting candidates: one row per moving direction, and MWPA's interactive one.
     cand: Population,
     cand_cost: Vec<f64>,
     /// The lead's position while others raid or besiege it.
@@ -261,6 +273,7 @@ impl Pack {
             step_b: Vec::new(),
             step_c: Vec::new(),
             d_near: 0.0,
+            directions: Vec::new(),
             cand: Population::zeros(0, 0),
             cand_cost: Vec::new(),
             g: Vec::new(),
@@ -289,7 +302,8 @@ impl Pack {
         }
         self.cost = vec![f64::INFINITY; n];
         ctx.evaluate_population(&self.x, &mut self.cost);
-        let rows = self.settings.h + usize::from(self.variant.interactive);
+        self.directions = moving_directions(self.settings.h);
+        let rows = self.directions.len() + usize::from(self.variant.interactive);
         self.cand = Population::zeros(rows, dim);
         self.cand_cost = vec![f64::INFINITY; rows];
         self.g = vec![0.0; dim];
@@ -382,14 +396,19 @@ impl Pack {
     /// Scouting; false when the run must stop.
     fn scout(&mut self, ctx: &mut Context<'_>, t: usize) -> bool {
         let (h, dim) = (self.settings.h, self.x.dim());
+        let moves = self.directions.len();
+        if self.cand.is_empty() {
+            // No direction moves a wolf (h = 1 or 2) and no interactive candidate: nothing to try.
+            return true;
+        }
         for _ in 0..self.settings.t_max {
             for k in 1..=t {
                 if Self::halt(ctx) {
                     return false;
                 }
                 let i = self.order[k];
-                for p in 1..=h {
-                    direction(self.x.row(i), &self.step_a, p, h, self.cand.row_mut(p - 1));
+                for (r, &p) in self.directions.iter().enumerate() {
+                    direction(self.x.row(i), &self.step_a, p, h, self.cand.row_mut(r));
                 }
                 if self.variant.interactive {
                     // Two other scouts a != b (the difference term is zero with fewer).
@@ -418,7 +437,7 @@ impl Pack {
                     }
                     let (x, lead, xa, xb) = (self.x.row(i), self.x.row(self.lead), self.x.row(a), self.x.row(b));
                     interactive(x, lead, xa, xb, &self.phi, &self.varphi, &mut self.row);
-                    self.cand.row_mut(h).copy_from_slice(&self.row);
+                    self.cand.row_mut(moves).copy_from_slice(&self.row);
                 }
                 for r in 0..self.cand.len() {
                     ctx.repair(self.cand.row_mut(r));
@@ -636,14 +655,32 @@ mod tests {
         assert_eq!((scout_count(4, 3.0, 0.5), p.lead, p.order[1]), (1, 0, 1));
         let before = ctx.evaluations();
         assert!(p.scout(&mut ctx, 1));
-        // Round 1 from (2, 2): x + sin(2 pi p/4) = (3, 3) 18, (2, 2) 8, (1, 1) 2, (2, 2) 8: to
-        // (1, 1). Round 2: (2, 2), (1, 1), (0, 0) 0, (1, 1): (0, 0) beats the lead (0.01) and
-        // scouting ends: 8 evaluations.
-        assert_eq!(ctx.evaluations() - before, 8);
+        // Round 1 from (2, 2): x + sin(2 pi p/4) for p = 1, 3 (p = 2, 4 leave it where it is and
+        // are not evaluated) = (3, 3) 18, (1, 1) 2: to (1, 1). Round 2: (2, 2) 8, (0, 0) 0:
+        // (0, 0) beats the lead (0.01) and scouting ends: 4 evaluations.
+        assert_eq!(ctx.evaluations() - before, 4);
         assert_eq!(p.x.row(1), &[0.0, 0.0]);
         assert_eq!((p.cost[1], p.lead), (0.0, 1));
         // The others did not move.
         assert_eq!([p.x.row(2), p.x.row(3)], [&[5.0, 5.0][..], &[-6.0, 6.0][..]]);
+    }
+
+    #[test]
+    fn only_directions_that_move_a_wolf_are_tried() {
+        assert_eq!(moving_directions(4), [1, 3]);
+        assert_eq!(moving_directions(6), [1, 2, 4, 5]);
+        assert_eq!(moving_directions(3), [1, 2]);
+        assert!(moving_directions(1).is_empty() && moving_directions(2).is_empty());
+        // With no moving direction and no interactive candidate, scouting costs nothing.
+        let f = FunctionObjective::new(Function::Sphere, 2, -10.0, 10.0);
+        let mut rng = crate::rng::run_rng(1, 0);
+        let mut ctx = Context::new(&f, &mut rng, None, false, &[]);
+        let mut p = sphere_pack(&mut ctx, WPA);
+        p.settings.h = 2;
+        p.init(&mut ctx);
+        let before = ctx.evaluations();
+        assert!(p.scout(&mut ctx, 1));
+        assert_eq!(ctx.evaluations(), before);
     }
 
     #[test]
