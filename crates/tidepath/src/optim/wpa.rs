@@ -100,17 +100,8 @@ impl Wpa {
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
-    use crate::optim::functions::{Function, FunctionObjective};
-    use crate::optim::{run, Objective, Scratch, StopReason};
-    use crate::termination::Termination;
-    use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-    use std::sync::Arc;
-
-    fn wpa(p: WpaParams) -> Wpa {
-        Wpa::new(p.checked("t").unwrap())
-    }
 
     #[test]
     fn defaults_presets_and_checks() {
@@ -134,106 +125,5 @@ pub(crate) mod tests {
         }
         let q = WpaParams::from_table(&toml::from_str("h = 6").unwrap(), "p").unwrap();
         assert_eq!(*q.get(), WpaParams { h: 6, ..WpaParams::default() });
-    }
-
-    #[test]
-    fn reduces_sphere_and_is_deterministic() {
-        let obj = FunctionObjective::new(Function::Sphere, 5, -5.12, 5.12);
-        let go = |seed| {
-            let mut o = wpa(WpaParams { population: 40, ..WpaParams::wpa2017() });
-            let r = run(
-                &mut o,
-                &obj,
-                &Termination::evaluations(30_000),
-                &mut crate::rng::run_rng(seed, 0),
-                false,
-                &[],
-                &mut |_| {},
-            );
-            (r, o)
-        };
-        let (r, o) = go(1);
-        assert!(r.best_cost < r.history[0] * 1e-3, "{} from {}", r.best_cost, r.history[0]);
-        assert!(o.pack.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
-        let (r2, _) = go(1);
-        assert_eq!(r.best_x, r2.best_x);
-        assert_eq!(r.history, r2.history);
-        // 1 and 4 rayon threads, parallel evaluation.
-        let runs: Vec<_> = [1, 4]
-            .iter()
-            .map(|&t| {
-                let pool = rayon::ThreadPoolBuilder::new().num_threads(t).build().unwrap();
-                pool.install(|| {
-                    let mut o = wpa(WpaParams { population: 40, ..WpaParams::wpa2017() });
-                    run(
-                        &mut o,
-                        &obj,
-                        &Termination::evaluations(5_001),
-                        &mut crate::rng::run_rng(3, 0),
-                        true,
-                        &[],
-                        &mut |_| {},
-                    )
-                })
-            })
-            .collect();
-        assert_eq!(runs[0].best_x, runs[1].best_x);
-        assert_eq!(runs[0].history, runs[1].history);
-    }
-
-    /// Sphere that raises a stop flag once it has been evaluated `after` times.
-    pub(crate) struct StopAfter {
-        pub inner: FunctionObjective,
-        pub count: AtomicU64,
-        pub after: u64,
-        pub flag: Arc<AtomicBool>,
-    }
-
-    impl Objective for StopAfter {
-        fn dim(&self) -> usize {
-            self.inner.dim()
-        }
-        fn lower(&self) -> &[f64] {
-            self.inner.lower()
-        }
-        fn upper(&self) -> &[f64] {
-            self.inner.upper()
-        }
-        fn evaluate(&self, x: &[f64], s: &mut Scratch) -> f64 {
-            if self.count.fetch_add(1, Ordering::Relaxed) + 1 >= self.after {
-                self.flag.store(true, Ordering::Relaxed);
-            }
-            self.inner.evaluate(x, s)
-        }
-    }
-
-    #[test]
-    fn evaluation_limit_and_stop_flag_are_honoured_inside_a_generation() {
-        let obj = FunctionObjective::new(Function::Sphere, 4, -5.0, 5.0);
-        for limit in [1u64, 37, 301, 2_345] {
-            let mut o = wpa(WpaParams::default());
-            let r = run(
-                &mut o,
-                &obj,
-                &Termination::evaluations(limit),
-                &mut crate::rng::run_rng(2, 0),
-                false,
-                &[],
-                &mut |_| {},
-            );
-            assert_eq!(r.evaluations, limit);
-        }
-        // Stop raised during the first iteration's scouting (300 initial evaluations), and
-        // during its calling phase: the run ends within one scouting candidate set / one raid.
-        for after in [320u64, 2_000] {
-            let flag = Arc::new(AtomicBool::new(false));
-            let obj = StopAfter { inner: obj.clone(), count: AtomicU64::new(0), after, flag: flag.clone() };
-            let mut o = wpa(WpaParams::default());
-            let term = Termination::iterations(1_000).with_stop_flag(flag);
-            let r = run(&mut o, &obj, &term, &mut crate::rng::run_rng(2, 0), false, &[], &mut |_| {});
-            assert_eq!(r.stop_reason, StopReason::Cancelled);
-            assert!(r.iterations <= 1, "{}", r.iterations);
-            assert!(r.evaluations <= after + 4, "{} evaluations after a stop at {after}", r.evaluations);
-        }
     }
 }
