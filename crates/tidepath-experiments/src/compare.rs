@@ -347,8 +347,12 @@ pub fn request(budget: &RunBudget, planner: &str, seed: u64) -> PlanRequest {
 fn scenario_run(scenario: &Scenario, budget: &RunBudget, t: &Task, stop: Option<Arc<AtomicBool>>) -> Result<RunRecord> {
     let mut req = request(budget, &t.planner, t.seed);
     req.stop = stop;
-    let r = scenario.plan(&req, &mut |_| {})?;
-    Ok(RunRecord {
+    Ok(record_of(t, scenario.plan(&req, &mut |_| {})?))
+}
+
+/// The record an experiment keeps of task `t`'s plan.
+pub fn record_of(t: &Task, r: tidepath_io::plan_json::PlanReport) -> RunRecord {
+    RunRecord {
         problem: t.problem.clone(),
         planner: t.planner.clone(),
         run: t.run,
@@ -378,7 +382,7 @@ fn scenario_run(scenario: &Scenario, budget: &RunBudget, t: &Task, stop: Option<
             })
             .collect(),
         history: r.history,
-    })
+    }
 }
 
 /// One benchmark-function problem: a function, its dimension and its box.

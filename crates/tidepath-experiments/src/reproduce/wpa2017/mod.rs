@@ -45,8 +45,8 @@ pub(super) struct Scale {
 }
 
 impl Scale {
-    /// The paper's values and our readings of what it leaves out (ALGORITHMS.md 1.6-1.7,
-    /// docs/papers/wpa2017.md A12-A13): N = 100 and K_max = 500 for the wolf packs, 50 and 1000
+    /// The paper's values and our readings of what it leaves out (docs/papers/wpa2017.md
+    /// A12-A13): N = 100 and K_max = 500 for the wolf packs, 50 and 1000
     /// for PSO and GA, and the path scenario's own 300 and 300.
     pub const PAPER: Scale = Scale {
         wolf_iterations: 500,

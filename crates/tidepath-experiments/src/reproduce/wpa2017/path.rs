@@ -8,8 +8,7 @@ use std::time::Instant;
 use super::super::{Claim, ExperimentOutcome, Metric, PaperTable, ReproduceOptions};
 use super::{assemble, paper, secs, Scale};
 use crate::columns::{render, Column};
-use crate::compare::{gap_percent, request, run_reference, Comparison, RunBudget, Smoothing};
-use crate::record::MissionRecord;
+use crate::compare::{gap_percent, record_of, request, run_reference, Comparison, RunBudget, Smoothing};
 use crate::runner::{execute, tasks, RunControl, Task};
 use crate::table::num;
 use crate::RunRecord;
@@ -69,37 +68,7 @@ fn one_run(
         // Without a smoother the final path is the polyline.
         cost: first.and_then(|m| m.raw_cost.or(m.cost)).unwrap_or(f64::NAN),
     };
-    let record = RunRecord {
-        problem: t.problem.clone(),
-        planner: t.planner.clone(),
-        run: t.run,
-        seed: t.seed,
-        cost: r.cost_value(),
-        feasible: r.feasible,
-        length_m: r.length_m(),
-        travel_time_s: r.travel_time_s(),
-        evaluations: r.evaluations,
-        iterations: r.iterations,
-        elapsed_s: r.elapsed_s,
-        stop_reason: r.stop_reason,
-        waypoints: r.paths().first().map(|p| p.iter().map(|q| q.to_array()).collect()).unwrap_or_default(),
-        status: Some(r.status),
-        expansions: r.expansions,
-        samples: r.samples,
-        motion_checks: r.motion_checks,
-        graph_nodes: r.graph_nodes,
-        missions: r
-            .missions
-            .iter()
-            .map(|m| MissionRecord {
-                name: m.name.clone(),
-                status: m.status,
-                waypoints: m.points().iter().map(|q| q.to_array()).collect(),
-                goal_distance_m: m.goal_distance_m,
-            })
-            .collect(),
-        history: r.history,
-    };
+    let record = record_of(t, r);
     Ok((record, polyline))
 }
 
