@@ -470,23 +470,39 @@ fn finish(
     let planned = records.len();
     let records: Vec<RunRecord> =
         records.into_iter().flatten().filter(|r| r.stop_reason != StopReason::Cancelled).collect();
-    let complete = records.len() == planned;
-    let records_len = records.len();
+    let total_wall_s = start.elapsed().as_secs_f64();
+    comparison_of(kind, problems, planners, (runs, master_seed), budget.clone(), records, planned, total_wall_s)
+}
+
+/// The comparison of finished `records` (none cancelled) out of `planned` runs: its rows per
+/// problem and planner, the first planner the reference of the marks; incomplete when runs are
+/// missing. `seeding` is (runs per pair, master seed).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn comparison_of(
+    kind: &str,
+    problems: Vec<String>,
+    planners: &[String],
+    seeding: (u64, u64),
+    budget: RunBudget,
+    records: Vec<RunRecord>,
+    planned: usize,
+    total_wall_s: f64,
+) -> Comparison {
     let rows = problems.iter().flat_map(|p| rows_for(p, planners, &records)).collect();
     Comparison {
         tidepath_version: env!("CARGO_PKG_VERSION").to_string(),
         kind: kind.to_string(),
         problems,
         planners: planners.to_vec(),
-        runs,
-        master_seed,
-        budget: budget.clone(),
+        runs: seeding.0,
+        master_seed: seeding.1,
+        budget,
         rows,
+        complete: records.len() == planned,
+        finished_runs: records.len(),
         records,
-        total_wall_s: start.elapsed().as_secs_f64(),
+        total_wall_s,
         reference: None,
-        complete,
-        finished_runs: records_len,
         reference_planner: None,
         smoother: None,
     }

@@ -11,9 +11,9 @@ mod tests;
 use std::time::Instant;
 
 use super::{Claim, ExperimentOutcome, ReproduceOptions};
-use crate::compare::{compare_functions, Comparison, FunctionProblem, RunBudget};
+use crate::compare::{compare_functions, comparison_of, Comparison, FunctionProblem, RunBudget};
 use crate::runner::RunControl;
-use crate::table::{num, rows_for};
+use crate::table::num;
 use crate::RunRecord;
 use tidepath::error::{Error, Result};
 use tidepath::optim::ga::{Ga, GaParams};
@@ -141,24 +141,7 @@ fn assemble(
     records.retain(|r| r.stop_reason != StopReason::Cancelled);
     records.sort_by_key(|r| (index(&problems, &r.problem), index(planners, &r.planner), r.run));
     let planned = problems.len() * planners.len() * opts.runs as usize;
-    let rows = problems.iter().flat_map(|p| rows_for(p, planners, &records)).collect();
-    Comparison {
-        tidepath_version: env!("CARGO_PKG_VERSION").to_string(),
-        kind: kind.to_string(),
-        problems,
-        planners: planners.to_vec(),
-        runs: opts.runs,
-        master_seed: opts.master_seed,
-        budget,
-        rows,
-        complete: records.len() == planned,
-        finished_runs: records.len(),
-        records,
-        total_wall_s,
-        reference: None,
-        reference_planner: None,
-        smoother: None,
-    }
+    comparison_of(kind, problems, planners, (opts.runs, opts.master_seed), budget, records, planned, total_wall_s)
 }
 
 /// Table 4 at each planner's own budget: MWPA and WPA N = 100 for K_max = 500 iterations, PSO
