@@ -81,6 +81,7 @@ fn every_parameter_of_every_component_holds_its_bounds() {
             let spec = tidepath::encoding::EncodingSpec {
                 kind: e.id.into(),
                 waypoints: n.map_or(0, |n| n.clamp(0, i64::MAX) as usize),
+                ..Default::default()
             };
             match n {
                 Some(n) if n < 0 => Err("encoding.waypoints: must be a non-negative integer".to_string()),

@@ -182,6 +182,7 @@ impl Scenario {
             waypoints: n,
             bounds: &self.world.bounds,
             z_range: self.z_range(),
+            axis: self.encoding.axis,
         })
     }
 }

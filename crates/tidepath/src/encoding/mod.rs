@@ -22,6 +22,29 @@ pub struct EncodingArgs<'a> {
     pub bounds: &'a Aabb,
     /// The height band a 3-D encoding may use, or `None` in a 2-D world.
     pub z_range: Option<(f64, f64)>,
+    /// The sliced encoding's main axis.
+    pub axis: SliceAxis,
+}
+
+/// The direction the sliced encoding's planes are spaced along (`[encoding] axis`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SliceAxis {
+    /// The horizontal start-to-goal direction: planes across it (wpa2017's x-axis planes when
+    /// start and goal share a y).
+    #[default]
+    Path,
+    /// The world's x axis: planes x = const, evenly spaced from the start's x to the goal's
+    /// (lfhh2019's lines Y = j, with the paper's travel axis as tidepath's x).
+    X,
+    /// The world's y axis: planes y = const.
+    Y,
+}
+
+impl SliceAxis {
+    pub fn is_path(&self) -> bool {
+        *self == SliceAxis::Path
+    }
 }
 
 /// The `[encoding]` section: which encoding optimization planners search over.
@@ -32,11 +55,14 @@ pub struct EncodingSpec {
     pub kind: String,
     /// Interior waypoints (start and goal come on top).
     pub waypoints: usize,
+    /// The sliced encoding's main axis: "path" (default), "x" or "y".
+    #[serde(skip_serializing_if = "SliceAxis::is_path")]
+    pub axis: SliceAxis,
 }
 
 impl Default for EncodingSpec {
     fn default() -> Self {
-        Self { kind: "sliced".into(), waypoints: 20 }
+        Self { kind: "sliced".into(), waypoints: 20, axis: SliceAxis::Path }
     }
 }
 
@@ -67,14 +93,22 @@ pub const ENCODINGS: &[Entry<BuildEncoding>] = &[
         description: "one waypoint on each of n planes across the start-goal axis (cannot turn back along it)",
         citation: "wpa2017 section 3.1, lfhh2019 eqs. 12-13, ijs2023 section 3.1 (generalised to any axis)",
         params: EncodingParams::SPECS,
-        build: |a| Ok(Box::new(Sliced::new(a.start, a.goal, a.waypoints, a.bounds, a.z_range)?)),
+        build: |a| Ok(Box::new(Sliced::along(a.start, a.goal, a.waypoints, a.bounds, a.z_range, a.axis)?)),
     },
     Entry {
         id: "free",
         description: "n waypoints anywhere in the domain, visited in order",
         citation: "amfa2015 section 4",
         params: EncodingParams::SPECS,
-        build: |a| Ok(Box::new(FreeWaypoints::new(a.start, a.goal, a.waypoints, a.bounds, a.z_range)?)),
+        build: |a| {
+            if !a.axis.is_path() {
+                return Err(crate::error::Error::input(
+                    "encoding.axis",
+                    "only the sliced encoding has an axis; the free encoding places waypoints anywhere",
+                ));
+            }
+            Ok(Box::new(FreeWaypoints::new(a.start, a.goal, a.waypoints, a.bounds, a.z_range)?))
+        },
     },
 ];
 

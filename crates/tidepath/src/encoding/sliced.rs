@@ -15,7 +15,7 @@
 use crate::error::{Error, Result};
 use crate::geom::{Aabb, Vec2, Vec3};
 
-use super::Encoding;
+use super::{Encoding, SliceAxis};
 
 #[derive(Clone, Debug)]
 pub struct Sliced {
@@ -37,18 +37,51 @@ impl Sliced {
     /// `waypoints` interior planes; `z_range` is the allowed height band (3-D) or `None` for a
     /// 2-D plane, where z is interpolated between start and goal.
     pub fn new(start: Vec3, goal: Vec3, waypoints: usize, domain: &Aabb, z_range: Option<(f64, f64)>) -> Result<Self> {
+        Self::along(start, goal, waypoints, domain, z_range, SliceAxis::Path)
+    }
+
+    /// Planes across `axis`: the start-goal direction, or a world axis (planes x = const or
+    /// y = const between the start's and the goal's coordinate). The lateral variable is then
+    /// the other horizontal coordinate, measured from the start's.
+    pub fn along(
+        start: Vec3,
+        goal: Vec3,
+        waypoints: usize,
+        domain: &Aabb,
+        z_range: Option<(f64, f64)>,
+        axis: SliceAxis,
+    ) -> Result<Self> {
         if waypoints == 0 {
             return Err(Error::input("encoding.waypoints", "must be at least 1, got 0"));
         }
+        let tiny = 1e-9 * domain.size().max_element().max(1.0);
         let span = (goal - start).truncate();
-        let dist = span.length();
-        if dist <= 1e-9 * domain.size().max_element().max(1.0) {
-            return Err(Error::input(
-                "encoding.kind",
-                "the sliced encoding needs start and goal apart horizontally; use kind = \"free\"",
-            ));
-        }
-        let axis = span / dist;
+        let (axis, dist) = match axis {
+            SliceAxis::Path => {
+                let dist = span.length();
+                if dist <= tiny {
+                    return Err(Error::input(
+                        "encoding.kind",
+                        "the sliced encoding needs start and goal apart horizontally; use kind = \"free\"",
+                    ));
+                }
+                (span / dist, dist)
+            }
+            SliceAxis::X | SliceAxis::Y => {
+                let k = if axis == SliceAxis::X { 0 } else { 1 };
+                let dist = span[k].abs();
+                if dist <= tiny {
+                    let name = if k == 0 { "x" } else { "y" };
+                    return Err(Error::input(
+                        "encoding.axis",
+                        format!("planes across {name} need start and goal apart in {name}; use axis = \"path\""),
+                    ));
+                }
+                let mut unit = Vec2::ZERO;
+                unit[k] = span[k].signum();
+                (unit, dist)
+            }
+        };
         let normal = axis.perp();
         let stations: Vec<f64> = (1..=waypoints).map(|i| dist * i as f64 / (waypoints + 1) as f64).collect();
         let per = if z_range.is_some() { 2 } else { 1 };
@@ -213,6 +246,32 @@ mod tests {
         assert_eq!(enc.dim(), 3);
         let p = enc.decode(&[1.0, 2.0, 3.0]);
         assert!((p[2] - Vec3::new(50.0, 27.0, 0.0)).length() < 1e-12);
+    }
+
+    /// Planes x = const between the start's and the goal's x, whatever the goal's y: the
+    /// lateral variable is y - y_start, the same offset on every plane.
+    #[test]
+    fn x_axis_planes_sit_at_even_x_whatever_the_goal() {
+        let (s, g) = (Vec3::new(0.0, 10.0, -50.0), Vec3::new(100.0, 40.0, -20.0));
+        let enc = Sliced::along(s, g, 4, &domain(), Some((-90.0, -10.0)), SliceAxis::X).unwrap();
+        for k in 0..4 {
+            assert!((enc.lower()[2 * k] + 10.0).abs() < 1e-6 && (enc.upper()[2 * k] - 40.0).abs() < 1e-6);
+        }
+        let path = enc.decode(&[5.0, -30.0, 0.0, -40.0, -5.0, -50.0, 1.0, -60.0]);
+        let xs: Vec<f64> = path.iter().map(|p| p.x).collect();
+        for (x, want) in xs.iter().zip([0.0, 20.0, 40.0, 60.0, 80.0, 100.0]) {
+            assert!((x - want).abs() < 1e-9, "{xs:?}");
+        }
+        assert!((path[1] - Vec3::new(20.0, 15.0, -30.0)).length() < 1e-12);
+        assert_eq!(enc.encode(&path), vec![5.0, -30.0, 0.0, -40.0, -5.0, -50.0, 1.0, -60.0]);
+        // Travel towards -y along y planes.
+        let enc =
+            Sliced::along(Vec3::new(30.0, 45.0, 0.0), Vec3::new(80.0, 5.0, 0.0), 3, &domain(), None, SliceAxis::Y)
+                .unwrap();
+        let p = enc.decode(&[0.0, 0.0, 0.0]);
+        assert!((p[1] - Vec3::new(30.0, 35.0, 0.0)).length() < 1e-9, "{p:?}");
+        let err = Sliced::along(s, Vec3::new(0.0, 40.0, -20.0), 3, &domain(), None, SliceAxis::X).unwrap_err();
+        assert!(err.to_string().starts_with("encoding.axis"), "{err}");
     }
 
     #[test]

@@ -31,6 +31,7 @@ impl OptimizerPlanner {
                     waypoints: self.encoding.waypoints,
                     bounds: &problem.world.bounds,
                     z_range: problem.z_range(i),
+                    axis: self.encoding.axis,
                 })
             })
             .collect()
@@ -56,10 +57,15 @@ impl OptimizerPlanner {
             if p.len() < 2 || model.assess(p, &mut Vec::new()).feasible() {
                 continue;
             }
-            if super::sliced_hint::must_turn_back(problem, i) {
-                return Some(super::Claim::Hint(
-                    "the sliced encoding cannot go back along the start-goal axis, and every route here must: use the default planner (hybrid) or [encoding] kind = \"free\"".into(),
-                ));
+            if super::sliced_hint::must_turn_back(problem, i, self.encoding.axis) {
+                let axis = match self.encoding.axis {
+                    crate::encoding::SliceAxis::Path => "the start-goal axis",
+                    crate::encoding::SliceAxis::X => "x",
+                    crate::encoding::SliceAxis::Y => "y",
+                };
+                return Some(super::Claim::Hint(format!(
+                    "the sliced encoding cannot go back along {axis}, and every route here must: use the default planner (hybrid) or [encoding] kind = \"free\""
+                )));
             }
         }
         None

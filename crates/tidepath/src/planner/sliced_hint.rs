@@ -13,6 +13,7 @@
 use tidepath_search::{connected, SearchGrid};
 
 use super::Problem;
+use crate::encoding::SliceAxis;
 use crate::raster::Raster;
 use crate::world::Dims;
 
@@ -22,10 +23,11 @@ const CELLS_2D: usize = 100;
 const CELLS_3D: usize = 32;
 const LAYERS_3D: usize = 6;
 
-/// `true` when every route of mission `i` must go back along its start-goal axis, judged on a
+/// `true` when every route of mission `i` must go back along the encoding's axis (`slices`: the
+/// start-goal direction or a world axis), judged on a
 /// coarse raster; `false` when a forward-only route may exist or the question does not apply
 /// (no axis, start or goal cell blocked, or start and goal not connected at all).
-pub fn must_turn_back(problem: &Problem<'_>, i: usize) -> bool {
+pub fn must_turn_back(problem: &Problem<'_>, i: usize, slices: SliceAxis) -> bool {
     let w = problem.world;
     let m = &problem.missions[i];
     let size = w.bounds.size();
@@ -33,7 +35,12 @@ pub fn must_turn_back(problem: &Problem<'_>, i: usize) -> bool {
     let cell = size.x.max(size.y) / if three_d { CELLS_3D } else { CELLS_2D } as f64;
     let band = (w.bounds.max.z.min(m.vehicle.z_max()) - w.bounds.min.z.max(m.vehicle.z_min())).max(1e-9);
     let Ok(r) = Raster::new(w, &m.vehicle, cell, band / LAYERS_3D as f64, m.start.z) else { return false };
-    let axis = (m.goal - m.start).truncate();
+    let mut axis = (m.goal - m.start).truncate();
+    match slices {
+        SliceAxis::Path => {}
+        SliceAxis::X => axis.y = 0.0,
+        SliceAxis::Y => axis.x = 0.0,
+    }
     let len = axis.length();
     if len.is_nan() || len <= 0.0 {
         return false;
