@@ -59,3 +59,44 @@ proptest! {
         }
     }
 }
+
+/// Every encoding, any axis: waypoint k decodes to `waypoint_at(k, its variables)`, and
+/// `set_waypoint` with a decoded waypoint gives back its variables (what lfhh2019's smooth
+/// method relies on to write a smoothed path back without moving anything else).
+fn waypoints_round_trip(enc: &dyn Encoding, x: &[f64]) -> Result<(), TestCaseError> {
+    let path = enc.decode(x);
+    let per = enc.waypoint_dim();
+    prop_assert_eq!(per * (path.len() - 2), enc.dim());
+    let mut y = vec![f64::NAN; x.len()];
+    for k in 0..path.len() - 2 {
+        let v = &x[per * k..per * (k + 1)];
+        prop_assert!((enc.waypoint_at(k, v) - path[k + 1]).length() < 1e-9);
+        enc.set_waypoint(&mut y, k, path[k + 1]);
+    }
+    for (a, b) in x.iter().zip(&y) {
+        prop_assert!((a - b).abs() < 1e-6 * (1.0 + a.abs()), "{:?} -> {:?}", x, y);
+    }
+    Ok(())
+}
+
+proptest! {
+    #[test]
+    fn waypoints_are_set_and_read_one_at_a_time(
+        start in point(),
+        goal in point(),
+        n in 1usize..12,
+        axis in 0usize..3,
+        two_d in any::<bool>(),
+        u in prop::collection::vec(0.0..=1.0f64, 1..40),
+    ) {
+        use tidepath::encoding::SliceAxis;
+        let band = (!two_d).then_some((-280.0, -5.0));
+        let axis = [SliceAxis::Path, SliceAxis::X, SliceAxis::Y][axis];
+        let d = goal - start;
+        prop_assume!(d.x.abs() > 1.0 && d.y.abs() > 1.0);
+        let sliced = Sliced::along(start, goal, n, &domain(), band, axis).unwrap();
+        waypoints_round_trip(&sliced, &inside(&sliced, &u))?;
+        let free = FreeWaypoints::new(start, goal, n, &domain(), band).unwrap();
+        waypoints_round_trip(&free, &inside(&free, &u))?;
+    }
+}

@@ -69,13 +69,33 @@ impl Encoding for FreeWaypoints {
     fn decode_into(&self, x: &[f64], out: &mut Vec<Vec3>) {
         out.clear();
         out.push(self.start);
-        let per = if self.three_d { 3 } else { 2 };
-        for i in 0..self.n {
-            let u = &x[per * i..per * i + per];
-            let z = if self.three_d { self.min.z + u[2] * self.size.z } else { self.start.z };
-            out.push(Vec3::new(self.min.x + u[0] * self.size.x, self.min.y + u[1] * self.size.y, z));
+        let per = self.waypoint_dim();
+        for k in 0..self.n {
+            out.push(self.waypoint_at(k, &x[per * k..per * k + per]));
         }
         out.push(self.goal);
+    }
+
+    fn waypoint_dim(&self) -> usize {
+        if self.three_d {
+            3
+        } else {
+            2
+        }
+    }
+
+    fn waypoint_at(&self, _k: usize, u: &[f64]) -> Vec3 {
+        let z = if self.three_d { self.min.z + u[2] * self.size.z } else { self.start.z };
+        Vec3::new(self.min.x + u[0] * self.size.x, self.min.y + u[1] * self.size.y, z)
+    }
+
+    fn set_waypoint(&self, x: &mut [f64], k: usize, p: Vec3) {
+        let per = self.waypoint_dim();
+        let u = (p - self.min) / self.size.max(Vec3::splat(f64::MIN_POSITIVE));
+        x[per * k..per * k + 2].copy_from_slice(&[u.x, u.y]);
+        if self.three_d {
+            x[per * k + 2] = u.z;
+        }
     }
 
     /// The interior points of `path` when it has exactly `n` of them, else interior

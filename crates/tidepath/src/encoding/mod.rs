@@ -127,6 +127,16 @@ pub trait Encoding: Send + Sync {
     /// The decision vector whose path best follows `path` (start and goal included), clamped
     /// to the bounds: how a warm start enters an optimizer's population.
     fn encode(&self, path: &[Vec3]) -> Vec<f64>;
+    /// Variables that place one interior waypoint (the sliced encoding: lateral offset, and
+    /// height in 3-D; the free encoding: x, y, and z in 3-D). Waypoint k's are
+    /// `x[k * waypoint_dim()..(k + 1) * waypoint_dim()]`.
+    fn waypoint_dim(&self) -> usize;
+    /// Interior waypoint k (0-based) for its variables `v`.
+    fn waypoint_at(&self, k: usize, v: &[f64]) -> Vec3;
+    /// Sets interior waypoint k's variables in `x` to those that best place it at `p` (its
+    /// projection onto the waypoint's plane for the sliced encoding), unclamped: call
+    /// [`Encoding::repair`] afterwards.
+    fn set_waypoint(&self, x: &mut [f64], k: usize, p: Vec3);
     /// Brings `x` back inside the encoding's feasible set. The default clamps to the bounds.
     fn repair(&self, x: &mut [f64]) {
         for ((v, lo), hi) in x.iter_mut().zip(self.lower()).zip(self.upper()) {

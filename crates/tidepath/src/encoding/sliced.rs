@@ -154,14 +154,36 @@ impl Encoding for Sliced {
     fn decode_into(&self, x: &[f64], out: &mut Vec<Vec3>) {
         out.clear();
         out.push(self.start);
-        let per = if self.three_d { 2 } else { 1 };
-        for (i, &s) in self.stations.iter().enumerate() {
-            let xy = self.start.truncate() + self.axis * s + self.normal * x[per * i];
-            let z =
-                if self.three_d { x[per * i + 1] } else { self.start.z + (self.goal.z - self.start.z) * s / self.span };
-            out.push(xy.extend(z));
+        let per = self.waypoint_dim();
+        for k in 0..self.stations.len() {
+            out.push(self.waypoint_at(k, &x[per * k..per * k + per]));
         }
         out.push(self.goal);
+    }
+
+    fn waypoint_dim(&self) -> usize {
+        if self.three_d {
+            2
+        } else {
+            1
+        }
+    }
+
+    fn waypoint_at(&self, k: usize, v: &[f64]) -> Vec3 {
+        let s = self.stations[k];
+        let xy = self.start.truncate() + self.axis * s + self.normal * v[0];
+        let z = if self.three_d { v[1] } else { self.start.z + (self.goal.z - self.start.z) * s / self.span };
+        xy.extend(z)
+    }
+
+    /// The lateral offset of `p` from plane k's base point, and its height in 3-D: `p` moved
+    /// along the main axis onto the plane.
+    fn set_waypoint(&self, x: &mut [f64], k: usize, p: Vec3) {
+        let per = self.waypoint_dim();
+        x[per * k] = (p.truncate() - self.start.truncate()).dot(self.normal);
+        if self.three_d {
+            x[per * k + 1] = p.z;
+        }
     }
 
     /// Each plane takes the point where `path` first reaches its station along the main axis

@@ -178,6 +178,22 @@ impl<'a> Context<'a> {
         Some(verdict)
     }
 
+    /// lfhh2019's smooth method on `x` through the objective's encoding
+    /// ([`Objective::smooth_path`]); not an evaluation. False when the objective has no path.
+    pub fn smooth_path(&mut self, x: &mut [f64]) -> bool {
+        self.objective.smooth_path(x, &mut self.scratch)
+    }
+
+    /// The variable groups that each place one waypoint ([`Objective::waypoint_groups`]).
+    pub fn waypoint_groups(&self) -> Vec<std::ops::Range<usize>> {
+        self.objective.waypoint_groups()
+    }
+
+    /// Whether a box of one group's variables overlaps free water ([`Objective::region_free`]).
+    pub fn region_free(&self, group: usize, lo: &[f64], hi: &[f64]) -> Option<bool> {
+        self.objective.region_free(group, lo, hi)
+    }
+
     /// Evaluates every row of `pop` into `out`, in parallel when it pays. Rows beyond the
     /// remaining evaluation budget get +inf and are not counted; so do the rows left when the
     /// run is interrupted, so the best point evaluated so far is kept and nothing more is

@@ -94,6 +94,27 @@ pub trait Objective: Sync {
     fn feasible(&self, _x: &[f64], _scratch: &mut Scratch) -> Option<bool> {
         None
     }
+    /// Applies lfhh2019's smooth method (eq. 15, [`crate::path::midpoint_smooth`]) to the
+    /// path(s) `x` encodes: decode, move each interior waypoint to the midpoint of its longer
+    /// leg, write back only the encoding's free coordinates, repair. Evaluates nothing (the
+    /// caller evaluates the result like any other child) and is a pure function of `x`, so it
+    /// keeps runs deterministic. Returns false, leaving `x` as it was, when the objective has
+    /// no path (benchmark functions).
+    fn smooth_path(&self, _x: &mut [f64], _scratch: &mut Scratch) -> bool {
+        false
+    }
+    /// The groups of variables that each place one waypoint (a sliced plane's lateral offset
+    /// and height), for samplers that draw a waypoint's variables together, such as
+    /// lfhh2019's safe-cell sampling. Empty: no such structure (benchmark functions).
+    fn waypoint_groups(&self) -> Vec<std::ops::Range<usize>> {
+        Vec::new()
+    }
+    /// Whether the box `lo..=hi` of group `group`'s variables (one value per variable of the
+    /// group) overlaps a free cell of that waypoint's section: lfhh2019's Fig. 11 test before
+    /// a rectangle of histogram bins is accepted. `None`: not known (no such structure).
+    fn region_free(&self, _group: usize, _lo: &[f64], _hi: &[f64]) -> Option<bool> {
+        None
+    }
     /// True when one evaluation is costly enough (microseconds) that a population should be
     /// evaluated in parallel. Cheap analytic test functions say false.
     fn parallel_hint(&self) -> bool {

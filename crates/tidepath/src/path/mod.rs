@@ -8,6 +8,7 @@ mod assess;
 mod assess_flown;
 mod flown;
 mod metrics;
+mod midpoint_smooth;
 mod speeds;
 mod violations;
 
@@ -15,6 +16,7 @@ pub use crate::validity::{ModelSettings, TravelModel};
 pub use assess::Assessment;
 pub use flown::{Flown, FlownMotion};
 pub use metrics::Metrics;
+pub use midpoint_smooth::midpoint_smooth;
 pub use speeds::resample_speeds;
 pub use violations::{Violation, ViolationKind};
 

@@ -20,6 +20,7 @@ pub mod raster_search;
 pub mod reachability;
 pub mod registry;
 pub mod sampling;
+pub mod section_cells;
 mod sliced_hint;
 pub mod solve;
 pub use fleet_judge::judge_fleet;

@@ -8,6 +8,7 @@
 //! variables, so every optimizer searches them like coordinates and the bounds repair clamps
 //! them). A vehicle without a range adds none, so such problems are unchanged.
 
+use super::section_cells::SectionCells;
 use super::Problem;
 use crate::encoding::Encoding;
 use crate::optim::{Objective, Scratch};
@@ -23,6 +24,10 @@ pub struct PathObjective<'a> {
     speed_genes: Vec<usize>,
     lower: Vec<f64>,
     upper: Vec<f64>,
+    /// Every interior waypoint of every mission: (mission, waypoint, its variables in x).
+    groups: Vec<(usize, usize, std::ops::Range<usize>)>,
+    /// Each group's free cells, built on first use ([`super::section_cells`]).
+    cells: Vec<std::sync::OnceLock<SectionCells>>,
 }
 
 impl<'a> PathObjective<'a> {
@@ -47,7 +52,16 @@ impl<'a> PathObjective<'a> {
             speed_genes.push(genes);
             offsets.push(lower.len());
         }
-        Self { problem, models, encodings, offsets, speed_genes, lower, upper }
+        let mut groups = Vec::new();
+        for (i, e) in encodings.iter().enumerate() {
+            let per = e.waypoint_dim();
+            for k in 0..e.dim().checked_div(per).unwrap_or(0) {
+                let start = offsets[i] + k * per;
+                groups.push((i, k, start..start + per));
+            }
+        }
+        let cells = groups.iter().map(|_| std::sync::OnceLock::new()).collect();
+        Self { problem, models, encodings, offsets, speed_genes, lower, upper, groups, cells }
     }
 
     /// Mission i's encoding variables and its segment speeds (empty without a range).
@@ -168,6 +182,49 @@ impl Objective for PathObjective<'_> {
         Some(all)
     }
 
+    /// Each mission's path smoothed by eq. 15 and written back through its encoding; segment
+    /// speeds stay.
+    fn smooth_path(&self, x: &mut [f64], scratch: &mut Scratch) -> bool {
+        let mut points = std::mem::take(&mut scratch.points);
+        let mut smooth = std::mem::take(&mut scratch.paths);
+        smooth.resize_with(1, Vec::new);
+        for (i, e) in self.encodings.iter().enumerate() {
+            let genes = &mut x[self.offsets[i]..self.offsets[i] + e.dim()];
+            e.decode_into(genes, &mut points);
+            crate::path::midpoint_smooth(&points, &mut smooth[0]);
+            let interior = smooth[0].len().saturating_sub(2);
+            for k in 0..interior.min(e.dim().checked_div(e.waypoint_dim()).unwrap_or(0)) {
+                e.set_waypoint(genes, k, smooth[0][k + 1]);
+            }
+            e.repair(genes);
+        }
+        scratch.points = points;
+        scratch.paths = smooth;
+        true
+    }
+
+    fn waypoint_groups(&self) -> Vec<std::ops::Range<usize>> {
+        self.groups.iter().map(|g| g.2.clone()).collect()
+    }
+
+    /// Free cells of the waypoint's section, built from its variables' bounds on first use.
+    fn region_free(&self, group: usize, lo: &[f64], hi: &[f64]) -> Option<bool> {
+        let (i, k, vars) = self.groups.get(group)?;
+        if lo.len() != vars.len() || hi.len() != vars.len() {
+            return None;
+        }
+        let cells = self.cells[group].get_or_init(|| {
+            SectionCells::new(
+                &self.models[*i],
+                &*self.encodings[*i],
+                *k,
+                &self.lower[vars.clone()],
+                &self.upper[vars.clone()],
+            )
+        });
+        Some(cells.overlaps_free(lo, hi))
+    }
+
     fn repair(&self, x: &mut [f64]) {
         for (i, e) in self.encodings.iter().enumerate() {
             let (genes, speeds) = x[self.offsets[i]..self.offsets[i + 1]].split_at_mut(e.dim());
@@ -182,5 +239,86 @@ impl Objective for PathObjective<'_> {
 
     fn parallel_hint(&self) -> bool {
         true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cost::{GeneralCost, GeneralWeights};
+    use crate::encoding::{SliceAxis, Sliced};
+    use crate::geom::{Aabb, Vec3};
+    use crate::mission::Mission;
+    use crate::path::ModelSettings;
+    use crate::vehicle::Vehicle;
+    use crate::world::obstacle::{Obstacle, Shape};
+    use crate::world::terrain::{GaussianPeaks, Terrain};
+    use crate::world::World;
+
+    /// A 4 x 2 km box 1 km deep over a flat seabed at -900 m, one sphere of radius 300 m at
+    /// (2000, 1000, -500); the mission runs along x with planes x = 1000, 2000, 3000.
+    fn world() -> World {
+        let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -1000.0), Vec3::new(4000.0, 2000.0, 0.0)));
+        w.terrain = Terrain::Peaks(GaussianPeaks { base: -900.0, peaks: vec![], ceiling: None });
+        w.obstacles.push(Obstacle::fixed(Shape::Sphere { center: Vec3::new(2000.0, 1000.0, -500.0), radius: 300.0 }));
+        w
+    }
+
+    fn with_objective(three_d: bool, f: impl FnOnce(&PathObjective<'_>, &Sliced)) {
+        let w = world();
+        let v = Vehicle { depth_max: 1000.0, safety_distance: 0.0, ..Vehicle::default() };
+        let (s, g) = (Vec3::new(0.0, 1000.0, -500.0), Vec3::new(4000.0, 600.0, -500.0));
+        let missions = [Mission::new("m", v, s, g, 0.0)];
+        let settings = ModelSettings::default();
+        let cost = GeneralCost::new(GeneralWeights::default().checked("w").unwrap());
+        let problem = Problem {
+            world: &w,
+            settings: &settings,
+            cost: &cost,
+            missions: &missions,
+            fleet: &crate::fleet::NO_FLEET,
+        };
+        let band = three_d.then_some((-1000.0, 0.0));
+        let enc = Sliced::along(s, g, 3, &w.bounds, band, SliceAxis::X).unwrap();
+        let objective = PathObjective::new(&problem, vec![Box::new(enc.clone())]);
+        f(&objective, &enc);
+    }
+
+    /// Lateral offsets (from y = 1000) 0, 400, -200 on planes x = 1000, 2000, 3000; the goal's
+    /// offset is -400. Legs: 1000, sqrt(1000^2 + 400^2), sqrt(1000^2 + 600^2),
+    /// sqrt(1000^2 + 200^2). Waypoint 1: left < right -> (0 + 400) / 2 = 200. Waypoint 2:
+    /// left < right -> (400 - 200) / 2 = 100. Waypoint 3: left > right -> (400 - 200) / 2 = 100.
+    #[test]
+    fn smoothing_moves_only_the_free_coordinates_by_eq_15() {
+        with_objective(false, |o, _| {
+            let mut x = vec![0.0, 400.0, -200.0];
+            assert!(o.smooth_path(&mut x, &mut Scratch::default()));
+            assert_eq!(x, vec![200.0, 100.0, 100.0]);
+        });
+        with_objective(true, |o, enc| {
+            let mut x = vec![0.0, -500.0, 400.0, -100.0, -200.0, -500.0];
+            assert!(o.smooth_path(&mut x, &mut Scratch::default()));
+            assert_eq!(x, vec![200.0, -300.0, 100.0, -300.0, 100.0, -300.0]);
+            // Every waypoint stays on its plane.
+            let xs: Vec<f64> = enc.decode(&x).iter().map(|p| p.x).collect();
+            assert_eq!(xs, vec![0.0, 1000.0, 2000.0, 3000.0, 4000.0]);
+        });
+    }
+
+    /// The sphere fills the middle of plane x = 2000: a rectangle inside it has no free cell, one
+    /// reaching beyond it has; planes 1000 and 3000 are free except under the seabed.
+    #[test]
+    fn safe_cells_see_the_sphere_and_the_seabed() {
+        with_objective(true, |o, _| {
+            assert_eq!(o.waypoint_groups(), vec![0..2, 2..4, 4..6]);
+            // Offset 0 is y = 1000; the sphere's section at x = 2000 is a disc of 300 m.
+            assert_eq!(o.region_free(1, &[-100.0, -600.0], &[100.0, -400.0]), Some(false));
+            assert_eq!(o.region_free(1, &[-100.0, -600.0], &[600.0, -400.0]), Some(true));
+            assert_eq!(o.region_free(0, &[-100.0, -600.0], &[100.0, -400.0]), Some(true));
+            // Below the seabed (cells 50 m tall: -1000 .. -950 and -950 .. -900).
+            assert_eq!(o.region_free(0, &[-900.0, -1000.0], &[900.0, -920.0]), Some(false));
+            assert_eq!(o.region_free(3, &[0.0, 0.0], &[1.0, 1.0]), None);
+            assert_eq!(o.region_free(0, &[0.0], &[1.0]), None);
+        });
     }
 }
