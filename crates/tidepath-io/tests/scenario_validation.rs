@@ -138,6 +138,10 @@ fn model_cost_encoding_planner_values() {
     rejects(&with("length = 1.0, time = 1.0", "length = 1.0, tim = 1.0"), "cost.weights", "tim");
     rejects(&with("kind = \"sliced\"", "kind = \"spiral\""), "encoding.kind", "spiral");
     rejects(&with("waypoints = 10", "waypoints = 0"), "encoding.waypoints", "0");
+    rejects(&with("waypoints = 10", "waypoints = 10\naxis = \"z\""), "encoding.axis", "z");
+    let free_x = with("kind = \"sliced\"", "kind = \"free\"\naxis = \"x\"");
+    rejects(&free_x, "encoding.axis", "the free encoding");
+    Scenario::from_toml(&with("waypoints = 10", "waypoints = 10\naxis = \"y\""), "test.toml").unwrap();
     rejects(&with("vmax_fraction = 0.2", "vmax_fraction = -0.2"), "planner.params.pso", "-0.2");
     rejects(&with("id = \"pso\"", "id = \"pso\"\nspeed = 3"), "planner", "speed");
     rejects(&format!("{}\nextra = 1\n", demo()), "planner.params.pso", "extra");
