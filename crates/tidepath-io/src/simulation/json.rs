@@ -1,4 +1,4 @@
-//! The simulation file `simulate --out` writes: every phase (its trigger, the change, the
+//! The simulation file `simulate --out` writes: every phase (its trigger, the changes, the
 //! world the vehicle knew, the re-planned piece with its status, cost and planning time, the
 //! route ahead after it) and the executed track with its times. Positions are metres in the
 //! scenario's local frame; a geographic scenario adds longitude/latitude beside them and UTC
@@ -16,8 +16,9 @@ use tidepath::geom::Vec3;
 use tidepath::simulate::{Growth, Phase, Replan, ReplanPolicy};
 use tidepath::world::changes::Trigger;
 
-/// Bumped when a field changes meaning or goes away.
-pub const SIMULATION_FORMAT_VERSION: u32 = 1;
+/// Bumped when a field changes meaning or goes away (2: a phase's `change` became `changes`,
+/// every change of one event).
+pub const SIMULATION_FORMAT_VERSION: u32 = 2;
 
 /// The simulation as pretty-printed JSON.
 pub fn simulation_json(scenario: &Scenario, r: &SimReport) -> String {
@@ -99,10 +100,11 @@ fn phase_json(
         Trigger::AtTime(s) => json!({ "at_time_s": s }),
         Trigger::AfterDistance(m) => json!({ "after_distance_m": m }),
     });
-    let change = p
-        .change
-        .as_ref()
-        .map(|c| json!({ "description": c.description, "random_draws": c.draws, "skipped": c.skipped }));
+    let changes: Vec<Value> = p
+        .changes
+        .iter()
+        .map(|c| json!({ "description": c.description, "random_draws": c.draws, "skipped": c.skipped }))
+        .collect();
     let obstacles: Vec<Value> = known
         .obstacles
         .iter()
@@ -119,7 +121,7 @@ fn phase_json(
         "position": [p.position.x, p.position.y, p.position.z],
         "position_lonlat": lonlat(&[p.position]).map(|v| v[0].clone()),
         "trigger": trigger,
-        "change": change,
+        "changes": changes,
         "sighted_obstacle": p.sighted,
         "known_world": {
             "obstacles": obstacles,

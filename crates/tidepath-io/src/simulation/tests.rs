@@ -35,7 +35,9 @@ fn the_file_holds_every_phase_and_the_track() {
     assert_eq!(phases.len(), 2);
     assert_eq!(phases[1]["time_s"], 100.0);
     assert_eq!(phases[1]["trigger"]["at_time_s"], 100.0);
-    assert!(phases[1]["change"]["description"].as_str().unwrap().contains("moved to"));
+    assert_eq!(phases[1]["changes"].as_array().unwrap().len(), 1);
+    assert!(phases[1]["changes"][0]["description"].as_str().unwrap().contains("moved to"));
+    assert_eq!(phases[0]["changes"], serde_json::json!([]), "the departure has no change");
     assert!(phases[1]["route_problem"].is_string(), "the disc blocks the route");
     assert!(["exact", "feasible"].contains(&phases[1]["replan"]["status"].as_str().unwrap()));
     assert_eq!(phases[1]["known_world"]["obstacles"][0]["center_now"], serde_json::json!([500.0, 200.0, 0.0]));
@@ -80,7 +82,7 @@ fn the_same_seed_writes_the_same_file() {
         without_wall_times(&simulation_json(&s, &s.simulate(&SimRequest { parallel: true, ..req.clone() }).unwrap()));
     assert_eq!(a, b);
     let c = without_wall_times(&simulation_json(&s, &s.simulate(&SimRequest { seed: 6, ..req }).unwrap()));
-    assert_ne!(a["phases"][1]["change"], c["phases"][1]["change"], "another seed, another draw");
+    assert_ne!(a["phases"][1]["changes"], c["phases"][1]["changes"], "another seed, another draw");
 }
 
 #[test]

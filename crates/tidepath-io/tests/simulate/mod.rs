@@ -92,7 +92,7 @@ fn forecast_update_replans_on_the_new_forecast() {
     let sim = &r.sim;
     assert!(sim.reached, "{}", sim.reason);
     assert_eq!(sim.currents.len(), 2, "the new forecast arrived");
-    let p = sim.phases.iter().find(|p| p.change.is_some()).expect("the forecast phase");
+    let p = sim.phases.iter().find(|p| !p.changes.is_empty()).expect("the forecast phase");
     assert!(p.event.contains("forecast"), "{}", p.event);
     assert!(p.replan.as_ref().is_some_and(|x| x.status.is_success()), "re-planned on it");
     assert_ne!(p.route_before, p.route_after, "the route after the new forecast differs");

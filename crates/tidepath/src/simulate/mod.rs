@@ -131,22 +131,27 @@ pub struct Epoch {
     pub current: usize,
 }
 
-/// One phase: the departure plan (phase 0), one change, or one sighting, and what the loop
-/// did about it.
+/// One phase: the departure plan (phase 0), one change event, or one sighting, and what the
+/// loop did about it. A change event is every pending change with the same trigger (equal
+/// `Trigger` values): they apply together, in the scenario's order, and the route is checked
+/// and re-planned once for all of them (lfhh2019 moves every obstacle and vortex at each of
+/// its five changes: five events, not one per obstacle).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Phase {
-    /// The change's trigger (`None` for the departure plan and for sightings).
+    /// The changes' trigger (`None` for the departure plan and for sightings).
     pub trigger: Option<Trigger>,
     /// One line: what happened.
     pub event: String,
     /// The vehicle's position and time when the phase began.
     pub position: Vec3,
     pub time: f64,
-    pub change: Option<AppliedChange>,
+    /// The changes of a change event, in the scenario's order (empty for the departure plan
+    /// and for sightings).
+    pub changes: Vec<AppliedChange>,
     /// The obstacle seen in a sighting phase (its index in the true world).
     pub sighted: Option<usize>,
-    /// Whether the vehicle learnt anything: false for a change to a ship it has not seen and
-    /// for a skipped random change (nothing to check or re-plan).
+    /// Whether the vehicle learnt anything: false when every change of the event concerns a
+    /// ship it has not seen or is a skipped random change (nothing to check or re-plan).
     pub revealed: bool,
     /// The true world after the phase: an index into [`Simulation::epochs`].
     pub epoch: usize,
@@ -297,7 +302,7 @@ pub fn simulate(s: &Setup<'_>, rng: &mut Rng) -> Result<Simulation> {
         event: "departure".to_string(),
         position: m.start,
         time: m.departure_time,
-        change: None,
+        changes: Vec::new(),
         sighted: None,
         revealed: true,
         epoch: 0,
@@ -349,7 +354,7 @@ pub fn simulate(s: &Setup<'_>, rng: &mut Rng) -> Result<Simulation> {
             event: String::new(),
             position: pos,
             time: t,
-            change: None,
+            changes: Vec::new(),
             sighted: None,
             revealed: true,
             epoch: ocean.epochs.len() - 1,
@@ -361,23 +366,31 @@ pub fn simulate(s: &Setup<'_>, rng: &mut Rng) -> Result<Simulation> {
         };
         let mut learned = true;
         if fired < pending.len() {
-            let change = &s.changes[pending.remove(fired)];
-            let applied = change.apply(&mut ocean.truth, t, pos, m.goal, m.vehicle.safety_distance, rng)?;
-            if applied.skipped.is_none() {
-                let added = ocean.truth.obstacles.last().cloned();
-                let hidden = update_seen(&applied.resolved, &mut ocean.seen, added.as_ref(), s.params.sensor_range);
-                learned = !hidden;
-                ocean.push_epoch(t, matches!(applied.resolved, ChangeKind::ReplaceCurrent(_)));
-            } else {
-                learned = false;
+            // The event: every pending change with this very trigger, in the scenario's order.
+            let trigger = s.changes[pending[fired]].trigger;
+            let group: Vec<usize> = pending.iter().copied().filter(|&k| s.changes[k].trigger == trigger).collect();
+            pending.retain(|k| !group.contains(k));
+            let (mut seen_any, mut applied_any, mut new_current) = (false, false, false);
+            let mut unseen = Vec::with_capacity(group.len());
+            for &k in &group {
+                let applied = s.changes[k].apply(&mut ocean.truth, t, pos, m.goal, m.vehicle.safety_distance, rng)?;
+                let mut hidden = true;
+                if applied.skipped.is_none() {
+                    let added = ocean.truth.obstacles.last().cloned();
+                    hidden = update_seen(&applied.resolved, &mut ocean.seen, added.as_ref(), s.params.sensor_range);
+                    applied_any = true;
+                    new_current |= matches!(applied.resolved, ChangeKind::ReplaceCurrent(_));
+                }
+                seen_any |= !hidden;
+                unseen.push(hidden);
+                phase.changes.push(applied);
             }
-            phase.event = if learned {
-                applied.description.clone()
-            } else {
-                format!("{} (unseen by the vehicle: nothing to replan)", applied.description)
-            };
-            phase.trigger = Some(change.trigger);
-            phase.change = Some(applied);
+            if applied_any {
+                ocean.push_epoch(t, new_current);
+            }
+            learned = seen_any;
+            phase.event = event_line(&phase.changes, &unseen);
+            phase.trigger = Some(trigger);
         } else {
             let i = unseen[fired - pending.len()];
             ocean.seen[i] = true;
@@ -428,6 +441,64 @@ pub fn simulate(s: &Setup<'_>, rng: &mut Rng) -> Result<Simulation> {
         }
         phase.route_after = route.clone();
         phases.push(phase);
+    }
+}
+
+/// One line for a change event: the change's own description when it is alone; for several,
+/// how many of each kind (their descriptions, with the time, are in [`Phase::changes`]).
+/// `unseen[k]`: the vehicle learnt nothing from change k (a ship not seen yet, or a skipped
+/// draw).
+fn event_line(changes: &[AppliedChange], unseen: &[bool]) -> String {
+    if let ([c], [hidden]) = (changes, unseen) {
+        return match hidden {
+            false => c.description.clone(),
+            true => format!("{} (unseen by the vehicle: nothing to replan)", c.description),
+        };
+    }
+    // (singular, plural) per kind, in a fixed order.
+    const KINDS: [(&str, &str); 7] = [
+        ("obstacle moved", "obstacles moved"),
+        ("course change", "course changes"),
+        ("obstacle appeared", "obstacles appeared"),
+        ("obstacle disappeared", "obstacles disappeared"),
+        ("vortex moved", "vortices moved"),
+        ("vortex strength changed", "vortex strengths changed"),
+        ("new current forecast", "new current forecasts"),
+    ];
+    let mut counts = [0usize; 7];
+    let mut skipped = 0;
+    for c in changes {
+        if c.skipped.is_some() {
+            skipped += 1;
+            continue;
+        }
+        counts[match c.resolved {
+            ChangeKind::MoveObstacle { .. } => 0,
+            ChangeKind::ObstacleVelocity { .. } => 1,
+            ChangeKind::AddObstacle(_) => 2,
+            ChangeKind::RemoveObstacle { .. } => 3,
+            ChangeKind::MoveVortex { .. } => 4,
+            ChangeKind::VortexStrength { .. } => 5,
+            ChangeKind::ReplaceCurrent(_) => 6,
+        }] += 1;
+    }
+    let mut parts: Vec<String> = KINDS
+        .iter()
+        .zip(counts)
+        .filter(|(_, n)| *n > 0)
+        .map(|((one, many), n)| if n == 1 { format!("1 {one}") } else { format!("{n} {many}") })
+        .collect();
+    if skipped > 0 {
+        parts.push(format!("{skipped} skipped (every random draw covered the vehicle or its goal)"));
+    }
+    let hidden = unseen.iter().filter(|&&h| h).count() - skipped;
+    if hidden > 0 {
+        parts.push(format!("{hidden} unseen by the vehicle"));
+    }
+    let line = format!("{} changes: {}", changes.len(), parts.join(", "));
+    match unseen.iter().all(|&h| h) {
+        true => format!("{line} (nothing to replan)"),
+        false => line,
     }
 }
 

@@ -107,5 +107,50 @@ fn the_same_seed_gives_the_same_simulation() {
     assert!(a.complete && a.phases.len() == 2, "{}", a.reason);
     assert!(a.phases[1].replan.is_some(), "replanned at every change");
     let c = strip(run("theta-star", &changes, &truth, params, 8));
-    assert_ne!(a.phases[1].change, c.phases[1].change, "another seed draws another move");
+    assert_ne!(a.phases[1].changes, c.phases[1].changes, "another seed draws another move");
+}
+
+#[test]
+fn changes_with_the_same_trigger_are_one_event_with_one_replan() {
+    // lfhh2019 moves every obstacle and vortex at each change: all of them are one event.
+    // Two discs parked off the route move onto it at t = 100 s (listed apart, with a change
+    // of another trigger between them); obstacle 0 moves back off it after 500 m.
+    let world = World { obstacles: vec![disc(200.0, 330.0), disc(700.0, 330.0)], ..world_2d() };
+    let change =
+        |trigger, index, c| Change { trigger, kind: ChangeKind::MoveObstacle { index, center: c }, random: None };
+    let changes = [
+        change(Trigger::AtTime(100.0), 0, v(450.0, 200.0)),
+        change(Trigger::AfterDistance(500.0), 0, v(200.0, 330.0)),
+        change(Trigger::AtTime(100.0), 1, v(750.0, 200.0)),
+    ];
+    let params = SimParams { policy: ReplanPolicy::Always, ..SimParams::default() };
+    let sim = run("theta-star", &changes, &world, params, 1);
+    assert!(sim.reached && sim.complete, "{}", sim.reason);
+    assert!(sim.track_violations.is_empty(), "{:?}", sim.track_violations);
+    // Departure, the t = 100 s event (both moves), the 500 m event: three phases, three plans.
+    assert_eq!(sim.phases.len(), 3, "{:?}", sim.phases.iter().map(|p| &p.event).collect::<Vec<_>>());
+    assert_eq!(sim.phases.iter().filter(|p| p.replan.is_some()).count(), 3);
+    let p = &sim.phases[1];
+    assert_eq!((p.trigger, p.time), (Some(Trigger::AtTime(100.0)), 100.0));
+    let moved: Vec<&ChangeKind> = p.changes.iter().map(|c| &c.resolved).collect();
+    assert_eq!(moved, [&changes[0].kind, &changes[2].kind], "in the scenario's order");
+    assert_eq!(p.event, "2 changes: 2 obstacles moved");
+    // The one re-plan already knew both discs on the route, and went round both.
+    let (known, _) = sim.known(&world, 1);
+    let centres: Vec<Vec3> = known.obstacles.iter().map(|o| crate::world::changes::center(&o.shape)).collect();
+    assert_eq!(centres, [v(450.0, 200.0), v(750.0, 200.0)]);
+    assert!(p.route_problem.is_some());
+    assert!(p.replan.as_ref().unwrap().status.is_success());
+    // The track passes both discs (x = 450 and 750) off the line y = 200.
+    for x in [450.0, 750.0] {
+        let k = sim.track.points.iter().position(|q| q.x > x).unwrap();
+        let (a, b) = (sim.track.points[k - 1], sim.track.points[k]);
+        let y = a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
+        assert!((y - 200.0).abs() > 60.0, "at x = {x} the track is at y = {y}");
+    }
+    // One epoch per event: departure, t = 100 s, the 500 m mark.
+    assert_eq!(sim.epochs.len(), 3);
+    assert_eq!(sim.phases[2].trigger, Some(Trigger::AfterDistance(500.0)));
+    assert_eq!(sim.phases[2].changes.len(), 1);
+    assert_continuous(&sim);
 }
