@@ -32,6 +32,8 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
         other => format!("{other}; its times, if any, ignored"),
     };
     println!("{} — {} ({what})", scenario.name, args.plan.display());
+    // The cost model's own feasibility rule, printed beside tidepath's verdict.
+    let rule_below = scenario.cost_model()?.feasible_below();
     let mut total = 0.0;
     let several = judged.len() > 1;
     for (k, m) in judged.iter().enumerate() {
@@ -76,6 +78,11 @@ pub fn run(args: &EvalArgs) -> Result<Outcome, Error> {
             if m.violations.len() > MAX_LISTED {
                 println!("{indent}  ... and {} more", m.violations.len() - MAX_LISTED);
             }
+        }
+        if let Some(below) = rule_below {
+            let rule = tidepath_io::plan_json::ModelRule::of(below, m.cost);
+            let verdict = if rule.met { "met" } else { "not met" };
+            println!("{indent}{} rule: F < {below}: {verdict} (F = {:.9})", scenario.cost.model, m.cost);
         }
     }
     if several {

@@ -307,6 +307,12 @@ pub fn print_summary(scenario: &Scenario, r: &PlanReport) {
             m.cost_terms.iter().map(|(k, v)| format!("{k} {:.4}", v.as_f64().unwrap_or(f64::NAN))).collect();
         let cost = m.cost.map_or("none".to_string(), |c| format!("{c:.6}"));
         println!("{indent}cost           {cost}  ({})", terms.join(", "));
+        if let Some(rule) = &m.model_rule {
+            // The cost model's own feasibility rule, beside tidepath's verdict (the status).
+            let verdict = if rule.met { "met" } else { "not met" };
+            let label = format!("{} rule", r.cost_model);
+            println!("{indent}{label:<15}F < {}: {verdict} (F = {cost})", rule.below);
+        }
         if let (Some(raw), Some(s)) = (m.raw_cost, &m.smoothed) {
             // The planner's own polyline length beside the smoothed one printed below (wpa2017
             // reports both: the optimizer's polyline and the Dubins-smoothed path).

@@ -41,6 +41,9 @@ pub struct PlanAbout {
     pub default_time_cap: bool,
     /// A warm start was given and the planner uses warm starts.
     pub warm_start: bool,
+    /// The cost model's own feasibility rule ([`tidepath::cost::CostModel::feasible_below`]):
+    /// a path is feasible under it when its cost is below this.
+    pub model_rule_below: Option<f64>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -71,6 +74,10 @@ pub struct MissionReport {
     pub cost: Option<f64>,
     /// The weighted terms of the cost model, in the model's order; they sum to `cost`.
     pub cost_terms: serde_json::Map<String, serde_json::Value>,
+    /// The cost model's own feasibility rule and whether `cost` meets it, for a model whose
+    /// paper has one (lfhh2019: cost below 2); reported beside `feasible`, which is tidepath's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model_rule: Option<ModelRule>,
     pub feasible: bool,
     pub violations: Vec<Violation>,
     pub metrics: Option<Metrics>,
@@ -104,6 +111,22 @@ impl FlownReport {
     /// The points as vectors (in the file's frame).
     pub fn vectors(&self) -> Vec<Vec3> {
         self.points.iter().map(|p| Vec3::from_array(*p)).collect()
+    }
+}
+
+/// A cost model's own feasibility rule applied to one mission's cost.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ModelRule {
+    /// The rule: the cost must be below this.
+    pub below: f64,
+    /// Whether the mission's cost is below it (false without a cost).
+    pub met: bool,
+}
+
+impl ModelRule {
+    /// The rule `cost < below` applied to `cost` (a non-finite cost does not meet it).
+    pub fn of(below: f64, cost: f64) -> Self {
+        Self { below, met: cost.is_finite() && cost < below }
     }
 }
 
@@ -255,7 +278,7 @@ fn points(p: &[Vec3]) -> Vec<[f64; 3]> {
 }
 
 impl MissionReport {
-    fn new(m: &MissionPlan) -> Self {
+    fn new(m: &MissionPlan, rule_below: Option<f64>) -> Self {
         Self {
             name: m.name.clone(),
             waypoints: points(&m.waypoints),
@@ -266,6 +289,7 @@ impl MissionReport {
             flown: m.flown.as_ref().map(FlownReport::new),
             cost: finite(m.cost),
             cost_terms: m.terms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect(),
+            model_rule: rule_below.filter(|_| !m.waypoints.is_empty()).map(|b| ModelRule::of(b, m.cost)),
             feasible: m.feasible,
             violations: m.violations.clone(),
             metrics: m.metrics,
@@ -300,7 +324,7 @@ impl PlanReport {
             reason: plan.reason.clone(),
             feasible: plan.status.is_success(),
             cost: finite(plan.cost),
-            missions: plan.missions.iter().map(MissionReport::new).collect(),
+            missions: plan.missions.iter().map(|m| MissionReport::new(m, about.model_rule_below)).collect(),
             evaluations: s.evaluations,
             iterations: s.iterations,
             expansions: s.expansions,

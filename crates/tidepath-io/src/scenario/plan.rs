@@ -329,6 +329,7 @@ impl Scenario {
             time_limit_s: termination.wall_time.map(|d| d.as_secs_f64()),
             default_time_cap: limit_source == LimitSource::DefaultCap,
             warm_start: req.init.is_some(),
+            model_rule_below: cost.feasible_below(),
         };
         let mut report = PlanReport::new(&plan, about).with_frame(self.frame.as_ref(), self.epoch);
         let names: Vec<String> = plan.missions.iter().map(|m| m.name.clone()).collect();

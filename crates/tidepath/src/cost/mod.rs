@@ -2,9 +2,11 @@
 //! (`[cost] model = "..."`). `eval` prints the terms, so a user sees why a path costs what it does.
 
 pub mod general;
+pub mod lfhh2019;
 pub mod wpa2017;
 
 pub use general::{GeneralCost, GeneralWeights};
+pub use lfhh2019::{Lfhh2019Cost, Lfhh2019Params};
 pub use wpa2017::{Wpa2017Cost, Wpa2017Weights};
 
 use crate::error::Result;
@@ -30,6 +32,14 @@ pub const COST_MODELS: &[Entry<BuildCost>] = &[
         citation: "wpa2017",
         params: Wpa2017Weights::SPECS,
         build: |t| Ok(Box::new(Wpa2017Cost::new(Wpa2017Weights::from_table(t, "cost.weights")?))),
+    },
+    Entry {
+        id: "lfhh2019",
+        description:
+            "length ratio, unable joints, blocked segments and angle to the current; feasible when below 2 (eqs. 6-10)",
+        citation: "lfhh2019",
+        params: Lfhh2019Params::SPECS,
+        build: lfhh2019::build,
     },
 ];
 
@@ -123,6 +133,13 @@ pub trait CostModel: Send + Sync {
     /// When every motion's additive cost is this many units per metre whatever its direction
     /// and time (no current), the factor: then a shortest path is a cheapest one.
     fn cost_per_metre(&self, model: &PathModel<'_>) -> Option<f64>;
+
+    /// The model's own feasibility rule, when its paper has one: a path is feasible under it
+    /// when its total is below this (lfhh2019: 2). Reported beside tidepath's verdict
+    /// ([`crate::path::Assessment::feasible`]), never instead of it.
+    fn feasible_below(&self) -> Option<f64> {
+        None
+    }
 
     /// The total only.
     fn cost(&self, model: &PathModel<'_>, points: &[Vec3], scratch: &mut Scratch) -> f64 {
