@@ -233,7 +233,7 @@ fn report<M: Measurement>(m: &M, work: &Work, since: SystemTime) {
         "Rastrigin-{DIM}, {EVALUATIONS} evaluations, population {POPULATION}\n\
          criterion medians: bare {}{}\n\
          ratios: median [quartiles] of {ROUNDS} paired rounds\n\
-         {:<6} {:>24} {:>24}\n",
+         {:<8} {:>24} {:>24}\n",
         ms(median_ns("bare", since)),
         work.optimizers
             .iter()
@@ -252,7 +252,7 @@ fn report<M: Measurement>(m: &M, work: &Work, since: SystemTime) {
             let (med, lo, hi) = quartiles(v);
             format!("{med:.2}x [{lo:.2}-{hi:.2}]")
         };
-        table += &format!("{id:<6} {:>24} {:>24}\n", cell(&mut over_bare), cell(&mut over_replay));
+        table += &format!("{id:<8} {:>24} {:>24}\n", cell(&mut over_bare), cell(&mut over_replay));
     }
     print!("\n{table}");
     let out = criterion_dir().join(GROUP).join("ratios.txt");

@@ -8,10 +8,13 @@
 //! order and only then evaluate the population with [`Context::evaluate_population`]. Evaluation
 //! is a pure function of the vector, so results are bit-identical for any rayon thread count.
 
+pub mod ade;
 pub mod context;
 pub mod de;
+pub mod eda_g;
 pub mod functions;
 pub mod ga;
+pub mod histogram;
 pub mod mwpa;
 pub mod population;
 pub mod pso;

@@ -5,7 +5,10 @@
 //! them. Adding a preset is one entry.
 
 use crate::error::Result;
+use crate::optim::ade::AdeParams;
+use crate::optim::eda_g::EdaGParams;
 use crate::optim::ga::GaParams;
+use crate::optim::histogram::{FhhLtsParams, FhhParams, LfhhParams};
 use crate::optim::mwpa::MwpaParams;
 use crate::optim::pso::PsoParams;
 use crate::optim::wpa::WpaParams;
@@ -30,6 +33,13 @@ pub const PRESETS: &[Entry<PresetFor>] = &[
         params: &[],
         build: amfa2015,
     },
+    Entry {
+        id: "lfhh2019",
+        description: "lfhh2019's setting (Table 1): lfhh, fhh, fhh-lts, eda-g, ade",
+        citation: "Liu et al. 2019 (lfhh2019), Table 1 (readings in docs/papers/lfhh2019.md A7, A9, A14)",
+        params: &[],
+        build: lfhh2019,
+    },
 ];
 
 fn wpa2017(planner: &str) -> Option<toml::Table> {
@@ -46,6 +56,19 @@ fn amfa2015(planner: &str) -> Option<toml::Table> {
     Some(match planner {
         "pso" => PsoParams::amfa2015().to_table(),
         "ga" => GaParams::amfa2015().to_table(),
+        _ => return None,
+    })
+}
+
+/// lfhh2019's Table 1: NP = 200 for all, binNum = S = 100, lambda = 0.08, T = 5, and the
+/// adaptive DE's alpha = 0, beta = 0.4, F0 = 0.6 (the parameter structs' defaults).
+fn lfhh2019(planner: &str) -> Option<toml::Table> {
+    Some(match planner {
+        "lfhh" => LfhhParams::lfhh2019().to_table(),
+        "fhh" => FhhParams::lfhh2019().to_table(),
+        "fhh-lts" => FhhLtsParams::lfhh2019().to_table(),
+        "eda-g" => EdaGParams::lfhh2019().to_table(),
+        "ade" => AdeParams::lfhh2019().to_table(),
         _ => return None,
     })
 }

@@ -9,8 +9,11 @@ use super::hybrid::{Hybrid, HybridParams};
 use super::{OptimizerPlanner, Planner};
 use crate::encoding::EncodingSpec;
 use crate::error::{Error, Result};
+use crate::optim::ade::{Ade, AdeParams};
 use crate::optim::de::{De, DeParams};
+use crate::optim::eda_g::{EdaG, EdaGParams};
 use crate::optim::ga::{Ga, GaParams};
+use crate::optim::histogram::{FhhLtsParams, FhhParams, Histogram, LfhhParams};
 use crate::optim::mwpa::{Mwpa, MwpaParams};
 use crate::optim::pso::{Pso, PsoParams};
 use crate::optim::wpa::{Wpa, WpaParams};
@@ -119,6 +122,41 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
         citation: "wpa2017 (Zhang et al. 2017)",
         params: MwpaParams::SPECS,
         build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Mwpa::new(MwpaParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "lfhh",
+        description: "learning fixed-height histogram EDA: histograms of the elite pulled toward the best, path smoothing every T-th generation, safe-cell sampling of 3-D waypoints",
+        citation: "lfhh2019 (Liu et al. 2019)",
+        params: LfhhParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Histogram::lfhh(LfhhParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "fhh",
+        description: "fixed-height histogram EDA: per-variable histograms of equal mass from the elite, (mu + lambda) selection",
+        citation: "Tsutsui et al.; baseline in lfhh2019",
+        params: FhhParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Histogram::fhh(FhhParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "fhh-lts",
+        description: "fixed-height histogram EDA with lfhh2019's learning transformation (elite pulled toward the best)",
+        citation: "Tsutsui et al. with lfhh2019 eq. 14; baseline in lfhh2019",
+        params: FhhLtsParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Histogram::fhh_lts(FhhLtsParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "eda-g",
+        description: "Gaussian EDA (UMDA_c): independent normals fitted to the elite, std floored at 1e-3 of the range, (mu + lambda) selection",
+        citation: "Sebag & Ducoulombier 1998 (PBIL_C family), UMDA_c form; baseline in lfhh2019",
+        params: EdaGParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(EdaG::new(EdaGParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "ade",
+        description: "adaptive DE (a labelled reading: the cited rules could not be checked): DE/rand/1/bin, F decaying from 2 F0 to F0, CR ~ U[alpha, alpha + beta]",
+        citation: "Zhang, Gong, Li & Lin 2014 as cited; baseline in lfhh2019 (rules: docs/papers/lfhh2019.md A7)",
+        params: AdeParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Ade::new(AdeParams::from_table(t, p)?)))),
     },
     Entry {
         id: "astar",
