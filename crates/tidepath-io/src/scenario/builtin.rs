@@ -86,6 +86,34 @@ pub const BUILTIN: &[Entry<&str>] = &[
         params: &[],
         build: include_str!("../../scenarios/fleet-rendezvous.toml"),
     },
+    Entry {
+        id: "lfhh-2d",
+        description: "2-D: lfhh2019's experiment, 12 circles and 4 Lamb-Oseen vortices that move five times, 40 x 20 km",
+        citation: "lfhh2019, Table 2; obstacles and vortices drawn by scripts/make_lfhh2019_scenarios.py (the paper prints none)",
+        params: &[],
+        build: include_str!("../../scenarios/lfhh-2d.toml"),
+    },
+    Entry {
+        id: "lfhh-3d-1",
+        description: "3-D: lfhh2019's scenario 1, 10 spheres over one Gaussian seabed peak in 4 vortices, moving five times",
+        citation: "lfhh2019, Tables 3 and 5; spheres, vortices and peak drawn or chosen by scripts/make_lfhh2019_scenarios.py",
+        params: &[],
+        build: include_str!("../../scenarios/lfhh-3d-1.toml"),
+    },
+    Entry {
+        id: "lfhh-3d-2",
+        description: "3-D: lfhh2019's scenario 2, 10 spheres over two Gaussian seabed peaks in 4 vortices, moving five times",
+        citation: "lfhh2019, Tables 3 and 5; spheres, vortices and peaks drawn or chosen by scripts/make_lfhh2019_scenarios.py",
+        params: &[],
+        build: include_str!("../../scenarios/lfhh-3d-2.toml"),
+    },
+    Entry {
+        id: "lfhh-3d-3",
+        description: "3-D: lfhh2019's scenario 3, 10 spheres over three Gaussian seabed peaks in 4 vortices, moving five times",
+        citation: "lfhh2019, Tables 3 and 5; spheres, vortices and peaks drawn or chosen by scripts/make_lfhh2019_scenarios.py",
+        params: &[],
+        build: include_str!("../../scenarios/lfhh-3d-3.toml"),
+    },
 ];
 
 pub fn registry() -> Registry<&'static str> {

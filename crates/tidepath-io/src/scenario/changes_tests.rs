@@ -541,7 +541,9 @@ fn simulate_defaults_and_the_lfhh2019_preset() {
 
 #[test]
 fn scenarios_without_the_sections_load_and_print_as_before() {
-    for e in BUILTIN.iter().filter(|e| !["forecast-update", "coastal-traffic"].contains(&e.id)) {
+    // The built-ins with changes: two of their own, and lfhh2019's four.
+    let with_changes = |id: &str| ["forecast-update", "coastal-traffic"].contains(&id) || id.starts_with("lfhh-");
+    for e in BUILTIN.iter().filter(|e| !with_changes(e.id)) {
         let source = format!("builtin:{}", e.id);
         let s = Scenario::from_toml(e.build, &source).unwrap();
         assert!(s.changes.is_empty(), "{}", e.id);
