@@ -13,6 +13,11 @@
 //! timed run, recorded once beforehand. Its ratio is the optimizer's own overhead on exactly
 //! its evaluation work.
 //!
+//! The estimation-of-distribution planners (`fhh`, `fhh-lts`, `lfhh`, `eda-g`) run here with
+//! their elite clamped to the population (S = binNum = 40 instead of lfhh2019's 100 of 200):
+//! per generation they sort every variable's elite, so their overhead over a replay of
+//! converged points (which libm's `cos` evaluates quickly) is larger than the other optimizers'.
+//!
 //! Time is the benchmark thread's CPU time (on Unix; wall time elsewhere): the machines this
 //! runs on are often shared, and CPU time does not count the time other processes hold the
 //! core. Every run here is single-threaded (the test functions are too cheap for rayon, see
