@@ -53,7 +53,7 @@
 //!   [`POLL_CHILDREN`] children (every child when it asks `region_free` or smooths), so a
 //!   wall-time limit or Ctrl-C cuts a generation; the children left are not evaluated.
 
-mod model;
+pub mod model;
 mod select;
 #[cfg(test)]
 mod tests;
