@@ -253,10 +253,10 @@ def header(name, three, shapes):
             "standard deviation 1 km)."
         )
         + " The entries of one change share their trigger, and `tidepath simulate` applies them as one "
-        "event (one phase, one re-plan). A move is drawn around the departure centre written in the "
-        "entry, clipped to the box: the moves do not accumulate into a random walk (the format "
-        "displaces a given centre; a step from the current centre cannot be written). A draw that "
-        "covers the vehicle or the goal is redrawn, at most 100 times (A9)."
+        "event (one phase, one re-plan). The entries give no centre, so each move steps from where "
+        "the obstacle or vortex is when the change applies (a random walk from change to change), "
+        "clipped to the box. A draw that covers the vehicle or the goal is redrawn, at most 100 "
+        "times (A9)."
     )
     para(
         'Cost, encoding, planner and loop: the paper\'s cost F (eq. 6, [cost] model = "lfhh2019"); '
@@ -327,12 +327,12 @@ def scenario(name):
         for i, (c, r) in enumerate(shapes):
             law = "uniform" if three else "gaussian"
             out.append(
-                f'[[changes]]\nafter_distance = {fmt(d)}\nkind = "move-obstacle"\nobstacle = {i}\ncenter = {point(c)}\n'
+                f'[[changes]]\nafter_distance = {fmt(d)}\nkind = "move-obstacle"\nobstacle = {i}\n'
                 f'random = {{ law = "{law}", scale = {fmt(MOVE)} }}\n'
             )
         for j, v in enumerate(vortices):
             out.append(
-                f'[[changes]]\nafter_distance = {fmt(d)}\nkind = "move-vortex"\nvortex = {j}\ncenter = {point(v)}\n'
+                f'[[changes]]\nafter_distance = {fmt(d)}\nkind = "move-vortex"\nvortex = {j}\n'
                 f'random = {{ law = "gaussian", scale = {fmt(MOVE)} }}\n'
             )
     return "\n".join(out).rstrip() + "\n"

@@ -135,7 +135,12 @@ fn build_change(
     let kind = match spec.kind {
         ChangeKindId::MoveObstacle => {
             let index = list.obstacle(&field("obstacle"), spec.obstacle.unwrap_or_default())?;
-            let center = obstacle_center(&field("center"), spec.center.as_deref().unwrap_or_default(), cx)?;
+            // Without a centre (only with `random`, see `check_fields`) the draw displaces the
+            // obstacle's centre at the change's time, and the written one is never read.
+            let center = match spec.center.as_deref() {
+                Some(c) => obstacle_center(&field("center"), c, cx)?,
+                None => list.centres[index],
+            };
             ChangeKind::MoveObstacle { index, center }
         }
         ChangeKindId::ObstacleVelocity => {
@@ -179,7 +184,9 @@ fn build_change(
         }
         ChangeKindId::MoveVortex => {
             let index = list.vortex(&field("vortex"), spec.vortex.unwrap_or_default())?;
-            let c = spec.center.as_deref().unwrap_or_default();
+            // Without a centre (only with `random`) the draw displaces the vortex's centre at
+            // the change's time; [0, 0] is never read.
+            let c = spec.center.as_deref().unwrap_or(&[0.0, 0.0]);
             if c.len() != 2 {
                 return Err(Error::input(
                     field("center"),
@@ -217,7 +224,8 @@ fn build_change(
             ChangeKind::ReplaceCurrent(current)
         }
     };
-    let random = spec.random.as_ref().map(|r| build_random(&field("random"), r)).transpose()?;
+    let stepping = matches!(spec.kind, ChangeKindId::MoveObstacle | ChangeKindId::MoveVortex) && spec.center.is_none();
+    let random = spec.random.as_ref().map(|r| build_random(&field("random"), r, stepping)).transpose()?;
     Ok(Change { trigger, kind, random })
 }
 
@@ -292,6 +300,13 @@ fn check_fields(at: &str, spec: &ChangeSpec) -> Result<()> {
         VortexStrength => (&["vortex", "strength"], &[]),
         Current => (&["current"], &[]),
     };
+    // A random move may leave out its centre: it then steps from where the obstacle or vortex
+    // is when the change applies.
+    let stepping: [&str; 2] = [needs[0], "random"];
+    let (needs, may) = match kind {
+        MoveObstacle | MoveVortex if spec.random.is_some() && spec.center.is_none() => (&stepping[..1], &stepping[1..]),
+        _ => (needs, may),
+    };
     let present = [
         ("obstacle", spec.obstacle.is_some()),
         ("vortex", spec.vortex.is_some()),
@@ -356,7 +371,8 @@ fn check_coordinates(field: &str, c: &[f64]) -> Result<()> {
     }
 }
 
-fn build_random(field: &str, r: &RandomSpec) -> Result<RandomShift> {
+/// `from_current`: the change gives no centre, so the draw displaces the current one.
+fn build_random(field: &str, r: &RandomSpec, from_current: bool) -> Result<RandomShift> {
     if !(r.scale >= 0.0 && r.scale.is_finite()) {
         return Err(Error::input(format!("{field}.scale"), format!("must be finite and >= 0 (m), got {}", r.scale)));
     }
@@ -371,7 +387,7 @@ fn build_random(field: &str, r: &RandomSpec) -> Result<RandomShift> {
         LawId::Gaussian => Law::Gaussian,
         LawId::Uniform => Law::Uniform,
     };
-    Ok(RandomShift { law, scale: r.scale, max_draws: draws as u32 })
+    Ok(RandomShift { law, scale: r.scale, max_draws: draws as u32, from_current })
 }
 
 /// The mission loop's settings: `SimParams::default()` without a `[simulate]` section, else

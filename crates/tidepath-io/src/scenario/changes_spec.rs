@@ -45,7 +45,9 @@ pub struct ChangeSpec {
     /// ([longitude, latitude(, z)] in a geographic scenario, projected like
     /// `world.obstacles`' centres); the obstacle is there at the change's time and keeps its
     /// velocity. move-vortex: [x, y] in metres, in the local frame in a geographic scenario
-    /// too, as `world.current.vortices` are.
+    /// too, as `world.current.vortices` are. May be left out with `random`: the draw then
+    /// displaces the centre the obstacle or vortex has when the change applies, so successive
+    /// changes add up to a random walk.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub center: Option<Vec<f64>>,
     /// obstacle-velocity: the obstacle's new velocity (m/s), [vx, vy] or [vx, vy, vz]; east

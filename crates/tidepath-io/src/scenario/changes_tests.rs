@@ -132,7 +132,7 @@ fn random_shifts_default_to_lfhh2019s_redraw_limit() {
     let c = one(
         "[[changes]]\nat_time = 0.0\nkind = \"move-obstacle\"\nobstacle = 1\ncenter = [1.0, 2.0, 3.0]\nrandom = { law = \"gaussian\", scale = 1000.0 }",
     );
-    assert_eq!(c.random, Some(RandomShift { law: Law::Gaussian, scale: 1000.0, max_draws: 100 }));
+    assert_eq!(c.random, Some(RandomShift { law: Law::Gaussian, scale: 1000.0, max_draws: 100, from_current: false }));
     assert_eq!(RandomShift::LFHH2019_MAX_DRAWS, 100);
     for kind in [
         "kind = \"add-obstacle\"\nadd = { kind = \"sphere\", center = [1.0, 2.0, -3.0], radius = 4.0 }",
@@ -141,8 +141,25 @@ fn random_shifts_default_to_lfhh2019s_redraw_limit() {
         let c = one(&format!(
             "[[changes]]\nafter_distance = 10.0\n{kind}\nrandom = {{ law = \"uniform\", scale = 250.0, max_draws = 7 }}"
         ));
-        assert_eq!(c.random, Some(RandomShift { law: Law::Uniform, scale: 250.0, max_draws: 7 }), "{kind}");
+        assert_eq!(
+            c.random,
+            Some(RandomShift { law: Law::Uniform, scale: 250.0, max_draws: 7, from_current: false }),
+            "{kind}"
+        );
     }
+}
+
+/// A random move without a centre steps from where the obstacle or vortex is; without
+/// `random` the centre is still required.
+#[test]
+fn a_random_move_without_a_centre_steps_from_the_current_one() {
+    for kind in ["kind = \"move-obstacle\"\nobstacle = 1", "kind = \"move-vortex\"\nvortex = 0"] {
+        let c =
+            one(&format!("[[changes]]\nafter_distance = 10.0\n{kind}\nrandom = {{ law = \"gaussian\", scale = 9.0 }}"));
+        assert_eq!(c.random, Some(RandomShift { law: Law::Gaussian, scale: 9.0, max_draws: 100, from_current: true }));
+    }
+    let e = error("[[changes]]\nat_time = 0.0\nkind = \"move-obstacle\"\nobstacle = 1");
+    assert!(e.starts_with("changes[0].center: missing"), "{e}");
 }
 
 #[test]

@@ -89,7 +89,12 @@ fn a_change_that_closes_the_way_ends_the_mission_naming_the_phase() {
 
 #[test]
 fn the_same_seed_gives_the_same_simulation() {
-    let shift = RandomShift { law: Law::Gaussian, scale: 80.0, max_draws: RandomShift::LFHH2019_MAX_DRAWS };
+    let shift = RandomShift {
+        law: Law::Gaussian,
+        scale: 80.0,
+        max_draws: RandomShift::LFHH2019_MAX_DRAWS,
+        from_current: false,
+    };
     let changes = [moved_disc(Some(shift))];
     let truth = parked();
     let params = SimParams { policy: ReplanPolicy::Always, window: 1, ..SimParams::default() };

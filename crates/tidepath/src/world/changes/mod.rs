@@ -112,7 +112,7 @@ impl Change {
         let dims3 = world.dims == super::Dims::Three;
         for draw in 1..=shift.max_draws {
             let d = shift.draw(rng, dims3);
-            let resolved = self.kind.displaced(d, world, at_time)?;
+            let resolved = self.kind.displaced(d, world, at_time, shift.from_current)?;
             let mut trial = world.clone();
             let description = resolved.apply_to(&mut trial, at_time)?;
             if resolved.covers(&trial, at_time, [vehicle_pos, goal], safety) {
@@ -183,12 +183,20 @@ impl ChangeKind {
     }
 
     /// This change with its centre displaced by `d` and clipped to the domain (the centre an
-    /// obstacle has at `t`, for moves and appearances).
-    fn displaced(&self, d: Vec3, world: &World, t: f64) -> Result<ChangeKind> {
+    /// obstacle has at `t`, for moves and appearances). With `from_current`, a move displaces
+    /// the centre the obstacle or vortex has at `t` instead of the written one.
+    fn displaced(&self, d: Vec3, world: &World, t: f64, from_current: bool) -> Result<ChangeKind> {
         let (lo, hi) = (world.bounds.min, world.bounds.max);
         Ok(match self {
             ChangeKind::MoveObstacle { index, center } => {
-                ChangeKind::MoveObstacle { index: *index, center: (*center + d).clamp(lo, hi) }
+                let base = if from_current {
+                    let n = world.obstacles.len();
+                    let o = world.obstacles.get(*index).ok_or_else(|| out_of_range("obstacle", *index, n))?;
+                    self::center(&o.shape_at(t))
+                } else {
+                    *center
+                };
+                ChangeKind::MoveObstacle { index: *index, center: (base + d).clamp(lo, hi) }
             }
             ChangeKind::AddObstacle(o) => {
                 let mut o = o.clone();
@@ -197,7 +205,15 @@ impl ChangeKind {
                 ChangeKind::AddObstacle(o)
             }
             ChangeKind::MoveVortex { index, center } => {
-                let c = (*center + d.truncate()).clamp(lo.truncate(), hi.truncate());
+                let base = match (&world.current, from_current) {
+                    (Current::Vortices(v), true) => {
+                        let n = v.len();
+                        let v = v.get(*index).ok_or_else(|| out_of_range("vortex", *index, n))?;
+                        Vec2::new(v.x, v.y)
+                    }
+                    _ => *center,
+                };
+                let c = (base + d.truncate()).clamp(lo.truncate(), hi.truncate());
                 ChangeKind::MoveVortex { index: *index, center: c }
             }
             _ => {

@@ -24,6 +24,10 @@ pub struct RandomShift {
     pub scale: f64,
     /// Draws before the change is skipped (lfhh2019 A9: 100).
     pub max_draws: u32,
+    /// Displace the centre the obstacle or vortex has when the change applies, not the one
+    /// written in the change: successive changes then add up to a random walk (lfhh2019's
+    /// obstacles move on from where the last change left them).
+    pub from_current: bool,
 }
 
 impl RandomShift {

@@ -92,7 +92,7 @@ fn random_move(index: usize, center: Vec3, law: Law, scale: f64) -> Change {
     Change {
         trigger: Trigger::AfterDistance(100.0),
         kind: ChangeKind::MoveObstacle { index, center },
-        random: Some(RandomShift { law, scale, max_draws: RandomShift::LFHH2019_MAX_DRAWS }),
+        random: Some(RandomShift { law, scale, max_draws: RandomShift::LFHH2019_MAX_DRAWS, from_current: false }),
     }
 }
 
@@ -148,11 +148,55 @@ fn a_change_that_always_covers_is_skipped_and_clipped_to_the_domain() {
 fn draws_follow_the_stated_law() {
     // Uniform on [-2, 2]: every draw inside; Gaussian with sd 2: sample variance near 4.
     let mut rng = run_rng(9, 0);
-    let u = RandomShift { law: Law::Uniform, scale: 2.0, max_draws: 1 };
+    let u = RandomShift { law: Law::Uniform, scale: 2.0, max_draws: 1, from_current: false };
     assert!((0..1000).map(|_| u.draw(&mut rng, true)).all(|d| d.abs().max_element() <= 2.0));
     let g = RandomShift { law: Law::Gaussian, ..u };
     let xs: Vec<f64> = (0..20_000).map(|_| g.draw(&mut rng, false)).flat_map(|d| [d.x, d.y]).collect();
     let var = xs.iter().map(|x| x * x).sum::<f64>() / xs.len() as f64;
     assert!((var - 4.0).abs() < 0.15, "{var}");
     assert_eq!(g.draw(&mut rng, false).z, 0.0);
+}
+
+/// With `from_current`, a uniform draw of scale 2 m steps from where the obstacle or vortex is
+/// at the change's time, not from the written centre: two changes add up. Draw by draw: each
+/// axis is 2 (2u - 1) for the stream's u, so the steps are recomputed here from the same seed.
+#[test]
+fn random_steps_from_the_current_centre_add_up() {
+    let step = |from_current| RandomShift { law: Law::Uniform, scale: 2.0, max_draws: 1, from_current };
+    let mut w = world();
+    let mut rng = run_rng(5, 0);
+    let (vehicle, goal) = (Vec3::new(900.0, 900.0, 0.0), Vec3::new(950.0, 50.0, 0.0));
+    let written = Vec3::new(1.0, 1.0, 0.0);
+    let walk = Change {
+        trigger: Trigger::AtTime(0.0),
+        kind: ChangeKind::MoveObstacle { index: 1, center: written },
+        random: Some(step(true)),
+    };
+    walk.apply(&mut w, 0.0, vehicle, goal, 0.0, &mut rng).unwrap();
+    walk.apply(&mut w, 0.0, vehicle, goal, 0.0, &mut rng).unwrap();
+    let mut again = run_rng(5, 0);
+    let d1 = step(true).draw(&mut again, false);
+    let d2 = step(true).draw(&mut again, false);
+    let want = Vec2::new(500.0, 500.0) + (d1 + d2).truncate();
+    assert!((circle_center(&w.obstacles[1], 0.0) - want).length() < 1e-9, "{:?}", w.obstacles[1]);
+    assert!(d1.length() > 0.0 && d2.length() > 0.0);
+    // The moving disc: at t = 10 it is at (10, 0); the step starts there (clipped to y >= 0).
+    let mut w = world();
+    let c = Change { kind: ChangeKind::MoveObstacle { index: 0, center: written }, ..walk.clone() };
+    c.apply(&mut w, 10.0, vehicle, goal, 0.0, &mut run_rng(6, 0)).unwrap();
+    let d = step(true).draw(&mut run_rng(6, 0), false);
+    let want = (Vec2::new(10.0, 0.0) + d.truncate()).max(Vec2::ZERO);
+    assert!((circle_center(&w.obstacles[0], 10.0) - want).length() < 1e-9);
+    // A vortex steps from its centre (100, 100); without from_current from the written one.
+    let mut w = world();
+    let v = Change { kind: ChangeKind::MoveVortex { index: 0, center: Vec2::ZERO }, ..walk.clone() };
+    v.apply(&mut w, 0.0, vehicle, goal, 0.0, &mut run_rng(7, 0)).unwrap();
+    let d = step(true).draw(&mut run_rng(7, 0), false).truncate();
+    let Current::Vortices(vs) = &w.current else { panic!() };
+    assert!((Vec2::new(vs[0].x, vs[0].y) - (Vec2::new(100.0, 100.0) + d)).length() < 1e-9);
+    let mut w = world();
+    let fixed_base = Change { random: Some(step(false)), ..walk };
+    fixed_base.apply(&mut w, 0.0, vehicle, goal, 0.0, &mut run_rng(8, 0)).unwrap();
+    let d = step(false).draw(&mut run_rng(8, 0), false);
+    assert!((circle_center(&w.obstacles[1], 0.0) - (written + d).truncate().max(Vec2::ZERO)).length() < 1e-9);
 }
