@@ -15,13 +15,12 @@
 //! decays to F0 2^(e^(1-G)), about F0, in the last generation.
 //!
 //! Choices:
-//! * **G, the generation budget.** An optimizer sees the run's evaluation limit
-//!   ([`Context::remaining_evaluations`]) but not its iteration limit. G is, in order: the
-//!   `generations` parameter when set; else the evaluation budget left after the initial
-//!   population divided by NP, rounded up, when the run limits evaluations; else
-//!   [`DEFAULT_ITERATIONS`] (the runner's own limit for runs that set none). A run limited by
-//!   iterations should set `generations` to the same count. Past G, g is held at G, so F stays
-//!   at its last value (never the negative denominator of g > G + 1).
+//! * **G, the generation budget.** The `generations` parameter when set; else the fewer of the
+//!   run's iteration limit ([`Context::max_iterations`]) and the evaluation budget left after
+//!   the initial population divided by NP, rounded up, whichever the run sets; else
+//!   [`DEFAULT_ITERATIONS`]. Past G (a run stopped by wall time or a target cost ends sooner;
+//!   one that outlives G cannot), g is held at G, so F stays at its last value (never the
+//!   negative denominator of g > G + 1).
 //! * **g** is the number of generations done before the current one (0 in the first step).
 //! * Bounds: a mutant component outside the box goes to the midpoint between the parent's
 //!   component and the violated bound ([`super::de::bounce_to_midpoint`]), then the objective's
@@ -117,13 +116,16 @@ impl Ade {
         &self.params
     }
 
-    /// G for a run with `remaining` evaluations after the initial population (`u64::MAX`
-    /// less the initial population when evaluations are not limited).
-    pub fn generation_budget(&self, remaining: u64, limited: bool) -> u64 {
-        match (self.params.generations, limited) {
-            (Some(g), _) => g,
-            (None, true) => remaining.div_ceil(self.params.population as u64).max(1),
-            (None, false) => DEFAULT_ITERATIONS,
+    /// G for a run limited to `iterations` (if any) with `remaining` evaluations after the
+    /// initial population (`limited` false when evaluations are not limited).
+    pub fn generation_budget(&self, iterations: Option<u64>, remaining: u64, limited: bool) -> u64 {
+        let by_evaluations = limited.then(|| remaining.div_ceil(self.params.population as u64).max(1));
+        match (self.params.generations, iterations, by_evaluations) {
+            (Some(g), ..) => g,
+            (None, Some(i), Some(e)) => i.min(e).max(1),
+            (None, Some(i), None) => i.max(1),
+            (None, None, Some(e)) => e,
+            (None, None, None) => DEFAULT_ITERATIONS,
         }
     }
 }
@@ -151,7 +153,7 @@ impl Optimizer for Ade {
         self.trial_cost = vec![f64::INFINITY; n];
         self.u = vec![0.0; ctx.dim()];
         self.g = 0;
-        self.big_g = self.generation_budget(ctx.remaining_evaluations(), limited);
+        self.big_g = self.generation_budget(ctx.max_iterations(), ctx.remaining_evaluations(), limited);
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
@@ -243,15 +245,18 @@ mod tests {
     }
 
     #[test]
-    fn the_generation_budget_comes_from_the_parameter_or_the_evaluation_limit() {
+    fn the_generation_budget_comes_from_the_parameter_or_the_run_limits() {
         let ade = |generations| {
             Ade::new(AdeParams { population: 10, generations, ..AdeParams::default() }.checked("p").unwrap())
         };
-        assert_eq!(ade(Some(7)).generation_budget(1000, true), 7);
-        assert_eq!(ade(None).generation_budget(1000, true), 100);
-        assert_eq!(ade(None).generation_budget(1001, true), 101);
-        assert_eq!(ade(None).generation_budget(0, true), 1);
-        assert_eq!(ade(None).generation_budget(u64::MAX - 10, false), DEFAULT_ITERATIONS);
+        assert_eq!(ade(Some(7)).generation_budget(Some(300), 1000, true), 7);
+        assert_eq!(ade(None).generation_budget(None, 1000, true), 100);
+        assert_eq!(ade(None).generation_budget(None, 1001, true), 101);
+        assert_eq!(ade(None).generation_budget(None, 0, true), 1);
+        assert_eq!(ade(None).generation_budget(None, u64::MAX - 10, false), DEFAULT_ITERATIONS);
+        assert_eq!(ade(None).generation_budget(Some(300), u64::MAX - 10, false), 300);
+        assert_eq!(ade(None).generation_budget(Some(300), 1000, true), 100);
+        assert_eq!(ade(None).generation_budget(Some(30), 1000, true), 30);
         // Through a run: 10 + 50 evaluations of population 10 gives G = 5.
         let obj = FunctionObjective::new(Function::Sphere, 3, -1.0, 1.0);
         let mut a = ade(None);
@@ -259,7 +264,7 @@ mod tests {
         assert_eq!((a.big_g, a.g), (5, 5));
         let mut a = ade(None);
         run(&mut a, &obj, &Termination::iterations(3), &mut crate::rng::run_rng(1, 0), false, &[], &mut |_| {});
-        assert_eq!((a.big_g, a.g), (DEFAULT_ITERATIONS, 3));
+        assert_eq!((a.big_g, a.g), (3, 3));
     }
 
     #[test]

@@ -103,6 +103,12 @@ impl<'a> Context<'a> {
         self.objective.dim()
     }
 
+    /// The run's iteration limit (the runner's default when the run sets neither iterations
+    /// nor evaluations), for optimizers whose schedules depend on the generation budget.
+    pub fn max_iterations(&self) -> Option<u64> {
+        self.termination.and_then(|t| t.max_iterations)
+    }
+
     #[inline]
     pub fn lower(&self) -> &[f64] {
         &self.lower
