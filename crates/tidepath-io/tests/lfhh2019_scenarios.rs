@@ -3,7 +3,7 @@
 //! x = Y, y = X and z = Z - 20 km (written in each file's header).
 
 use tidepath::geom::Vec3;
-use tidepath::simulate::SimParams;
+use tidepath::simulate::{Acceptance, SimParams};
 use tidepath::validity::Validator;
 use tidepath::world::changes::{ChangeKind, Law, Trigger};
 use tidepath::world::{Current, Dims, Shape};
@@ -199,11 +199,20 @@ fn six_phases(s: &Scenario, sim: &tidepath::simulate::Simulation) {
 
 /// `tidepath simulate lfhh-2d` with the scenario's own planner, LFHH, on a small budget (20
 /// generations of 50 instead of 100 of 200, to keep the test short): the same six phases.
+/// The scenario accepts a window whose piece is feasible (lfhh2019's rule); on this small
+/// budget the routes wander, the last change finds the vehicle far from the goal, and the
+/// route beyond its window, left blocked, is flown into: the after-the-fact check says so.
+/// With tidepath's own rule (the spliced route feasible to the goal) the goal is reached.
 #[test]
 fn simulate_lfhh_2d_with_lfhh_reaches_the_goal_in_six_phases() {
     let s = scenario("lfhh-2d");
+    assert_eq!(s.simulate.accept, Acceptance::Window);
     let req = SimRequest { iterations: Some(20), population: Some(50), seed: 1, ..SimRequest::default() };
     let r = s.simulate(&req).unwrap();
     assert_eq!(r.planner, "lfhh");
+    assert!(!r.sim.track_violations.is_empty() && r.sim.reason.contains("the true world forbids the track"));
+    let last = r.sim.phases.last().and_then(|p| p.replan.as_ref()).unwrap();
+    assert!(last.reason.contains("the route after it is not"), "{}", last.reason);
+    let r = s.simulate(&SimRequest { accept: Some(Acceptance::Route), ..req }).unwrap();
     six_phases(&s, &r.sim);
 }

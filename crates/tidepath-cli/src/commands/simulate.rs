@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
-use tidepath::simulate::{Growth, ReplanPolicy};
+use tidepath::simulate::{Acceptance, Growth, ReplanPolicy};
 use tidepath::Error;
 use tidepath_io::scenario::{self, Scenario};
 use tidepath_io::simulation::{simulation_json, SimReport, SimRequest};
@@ -12,6 +12,14 @@ use tidepath_io::Outputs;
 use tidepath_plot::{render_simulation_figure, SimPanel, SimulationFigure};
 
 use crate::Outcome;
+
+#[derive(Clone, Copy, ValueEnum)]
+pub enum AcceptArg {
+    /// The route spliced from the window is feasible to the goal.
+    Route,
+    /// The window's piece is feasible (lfhh2019).
+    Window,
+}
 
 #[derive(Clone, Copy, ValueEnum)]
 pub enum PolicyArg {
@@ -41,6 +49,11 @@ pub struct SimulateArgs {
     /// When to re-plan (default: the scenario's `[simulate] policy`, else when-infeasible).
     #[arg(long, value_enum)]
     pub replan: Option<PolicyArg>,
+    /// When a re-planned window is good enough: `route` (the route spliced from it is feasible
+    /// to the goal; the default) or `window` (its piece is: lfhh2019's rule, the default of
+    /// `[simulate] preset = "lfhh2019"`).
+    #[arg(long, value_enum)]
+    pub accept: Option<AcceptArg>,
     /// Waypoints ahead of the vehicle the first re-planned window reaches (default 20).
     #[arg(long)]
     pub window: Option<usize>,
@@ -110,6 +123,10 @@ pub fn run(args: &SimulateArgs) -> Result<Outcome, Error> {
         }),
         sensor_range: args.sensor_range,
         warm_start: args.cold.then_some(false),
+        accept: args.accept.map(|a| match a {
+            AcceptArg::Route => Acceptance::Route,
+            AcceptArg::Window => Acceptance::Window,
+        }),
         parallel: true,
         stop: Some(crate::stop_flag()),
     };
@@ -138,12 +155,13 @@ fn print_phases(scenario: &Scenario, r: &SimReport) {
     };
     let sensor = p.sensor_range.map_or(String::new(), |s| format!(", sensor range {s} m"));
     println!(
-        "{} — {} (seed {}): re-plan {}, window {} waypoints ({growth}){sensor}",
+        "{} — {} (seed {}): re-plan {}, window {} waypoints ({growth}, accepting a feasible {}){sensor}",
         scenario.name,
         r.planner,
         r.seed,
         tidepath_io::simulation::policy_id(p.policy),
-        p.window
+        p.window,
+        tidepath_io::simulation::accept_id(p.accept)
     );
     for (k, ph) in sim.phases.iter().enumerate() {
         let mut line = format!("  phase {k:<3} t = {:>9.1} s  {}", ph.time, ph.event);

@@ -15,7 +15,7 @@ use chrono::{DateTime, Utc};
 use tidepath::error::{Error, Result};
 use tidepath::geo::GeoFrame;
 use tidepath::geom::{Vec2, Vec3};
-use tidepath::simulate::{Growth, ReplanPolicy, SimParams};
+use tidepath::simulate::{Acceptance, Growth, ReplanPolicy, SimParams};
 use tidepath::world::changes::{center as shape_center, Change, ChangeKind, Law, RandomShift, Trigger};
 use tidepath::world::{Current, Dims, World};
 
@@ -433,6 +433,12 @@ pub(super) fn build_simulate(spec: Option<&SimulateSpec>) -> Result<SimParams> {
     }
     if let Some(w) = s.warm_start {
         p.warm_start = w;
+    }
+    if let Some(a) = s.accept {
+        p.accept = match a {
+            AcceptId::Route => Acceptance::Route,
+            AcceptId::Window => Acceptance::Window,
+        };
     }
     if let Some(r) = s.sensor_range {
         if !(r > 0.0 && r.is_finite()) {

@@ -138,8 +138,9 @@ pub enum LawId {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SimulateSpec {
-    /// "lfhh2019": start from lfhh2019's rule (window 20, grown by 1 waypoint, a re-plan at
-    /// every change, warm starts) instead of the defaults.
+    /// "lfhh2019": start from lfhh2019's rule (window 20, grown by 1 waypoint while the
+    /// window's piece is infeasible, a re-plan at every change, no warm start) instead of the
+    /// defaults.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub preset: Option<PresetId>,
     /// Waypoints ahead of the vehicle the first re-planned window reaches (default 20, >= 1).
@@ -148,6 +149,10 @@ pub struct SimulateSpec {
     /// How the window grows while no feasible piece is found: "double" (default) or "add".
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub growth: Option<GrowthId>,
+    /// When a re-planned window is good enough: "route" (default: the route spliced from it
+    /// is feasible to the goal) or "window" (its piece is, lfhh2019's rule; the preset's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub accept: Option<AcceptId>,
     /// Waypoints added per growth step with growth = "add" (default 1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub growth_step: Option<usize>,
@@ -180,6 +185,14 @@ pub enum PresetId {
 pub enum GrowthId {
     Double,
     Add,
+}
+
+/// `[simulate] accept`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum AcceptId {
+    Route,
+    Window,
 }
 
 /// `[simulate] policy`.

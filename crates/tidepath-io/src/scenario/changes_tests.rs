@@ -3,7 +3,7 @@
 //! scenarios that use them, and scenarios without them loading exactly as before.
 
 use tidepath::geom::{Vec2, Vec3};
-use tidepath::simulate::{Growth, ReplanPolicy, SimParams};
+use tidepath::simulate::{Acceptance, Growth, ReplanPolicy, SimParams};
 use tidepath::world::changes::{Change, ChangeKind, Law, RandomShift, Trigger};
 use tidepath::world::{Current, Obstacle, Shape};
 
@@ -308,6 +308,7 @@ fn every_error_names_its_field_and_value() {
         ("[simulate]\nsensor_range = 0.0".into(), "simulate.sensor_range: must be finite and > 0 (m), got 0"),
         ("[simulate]\nsensor_range = -3.0".into(), "simulate.sensor_range: must be finite and > 0 (m), got -3"),
         ("[simulate]\npolicy = \"never\"".into(), "simulate.policy: unknown variant `never`"),
+        ("[simulate]\naccept = \"piece\"".into(), "simulate.accept: unknown variant `piece`"),
         ("[simulate]\npreset = \"lfhh2020\"".into(), "simulate.preset: unknown variant `lfhh2020`"),
         ("[simulate]\nwindows = 3".into(), "simulate.windows: unknown field `windows`"),
         ("[simulate]\nsensor_range = nan".into(), "simulate.sensor_range"),
@@ -524,6 +525,7 @@ fn simulate_defaults_and_the_lfhh2019_preset() {
         SimParams {
             window: 20,
             growth: Growth::Double,
+            accept: Acceptance::Route,
             policy: ReplanPolicy::WhenInfeasible,
             warm_start: true,
             sensor_range: None
@@ -531,6 +533,15 @@ fn simulate_defaults_and_the_lfhh2019_preset() {
     );
     assert_eq!(sim("[simulate]\npreset = \"lfhh2019\""), SimParams::LFHH2019);
     assert_eq!(SimParams::LFHH2019.growth, Growth::Add(1));
+    assert_eq!(SimParams::LFHH2019.accept, Acceptance::Window);
+    assert_eq!(
+        sim("[simulate]\npreset = \"lfhh2019\"\naccept = \"route\""),
+        SimParams { accept: Acceptance::Route, ..SimParams::LFHH2019 }
+    );
+    assert_eq!(
+        sim("[simulate]\naccept = \"window\""),
+        SimParams { accept: Acceptance::Window, ..SimParams::default() }
+    );
     // Fields apply on top of the preset.
     assert_eq!(
         sim("[simulate]\npreset = \"lfhh2019\"\ngrowth_step = 3\nwarm_start = false"),
@@ -545,6 +556,7 @@ fn simulate_defaults_and_the_lfhh2019_preset() {
         SimParams {
             window: 5,
             growth: Growth::Add(1),
+            accept: Acceptance::Route,
             policy: ReplanPolicy::Always,
             warm_start: true,
             sensor_range: Some(800.0)

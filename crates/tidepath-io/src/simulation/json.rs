@@ -13,7 +13,7 @@ use super::SimReport;
 use crate::export::utc;
 use crate::scenario::Scenario;
 use tidepath::geom::Vec3;
-use tidepath::simulate::{Growth, Phase, Replan, ReplanPolicy};
+use tidepath::simulate::{Acceptance, Growth, Phase, Replan, ReplanPolicy};
 use tidepath::world::changes::Trigger;
 
 /// Bumped when a field changes meaning or goes away (2: a phase's `change` became `changes`,
@@ -49,6 +49,7 @@ pub fn simulation_json(scenario: &Scenario, r: &SimReport) -> String {
             "window": p.window,
             "growth": match p.growth { Growth::Double => "double".to_string(), Growth::Add(n) => format!("add {n}") },
             "policy": policy_id(p.policy),
+            "accept": accept_id(p.accept),
             "warm_start": p.warm_start,
             "sensor_range_m": p.sensor_range,
             "replan_time_limit_s": r.replan_time_limit_s,
@@ -75,6 +76,14 @@ pub fn simulation_json(scenario: &Scenario, r: &SimReport) -> String {
     let mut text = serde_json::to_string_pretty(&doc).expect("JSON of numbers and strings");
     text.push('\n');
     text
+}
+
+/// The `[simulate] accept` word for `a`.
+pub fn accept_id(a: Acceptance) -> &'static str {
+    match a {
+        Acceptance::Route => "route",
+        Acceptance::Window => "window",
+    }
 }
 
 pub fn policy_id(p: ReplanPolicy) -> &'static str {

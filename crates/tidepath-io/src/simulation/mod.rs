@@ -10,7 +10,7 @@ mod json;
 #[cfg(test)]
 mod tests;
 
-pub use json::{policy_id, simulation_json, SIMULATION_FORMAT_VERSION};
+pub use json::{accept_id, policy_id, simulation_json, SIMULATION_FORMAT_VERSION};
 
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
@@ -20,7 +20,7 @@ use crate::scenario::{default_time_limit_s, PlanRequest, Scenario};
 use tidepath::error::{Error, Result};
 use tidepath::planner;
 use tidepath::rng::run_rng;
-use tidepath::simulate::{simulate, Growth, ReplanPolicy, Setup, SimParams, Simulation};
+use tidepath::simulate::{simulate, Acceptance, Growth, ReplanPolicy, Setup, SimParams, Simulation};
 use tidepath::termination::check_wall_time;
 
 /// How to run one simulation; `None` fields fall back to the scenario (`[planner]`,
@@ -44,6 +44,8 @@ pub struct SimRequest {
     pub policy: Option<ReplanPolicy>,
     pub sensor_range: Option<f64>,
     pub warm_start: Option<bool>,
+    /// What makes a window good enough (default: the scenario's `[simulate] accept`).
+    pub accept: Option<Acceptance>,
     /// Evaluate populations on the rayon pool (results are identical either way).
     pub parallel: bool,
     pub stop: Option<Arc<AtomicBool>>,
@@ -91,6 +93,9 @@ impl Scenario {
         }
         if let Some(w) = req.warm_start {
             p.warm_start = w;
+        }
+        if let Some(a) = req.accept {
+            p.accept = a;
         }
         if !(1..=MAX_WINDOW).contains(&p.window) {
             return Err(Error::input(

@@ -20,6 +20,7 @@ mod tests_sensor;
 
 pub use walk::{advance, bounding_radius, due, track_violations, Event, Track};
 pub use window::{next_window, replan_budget, splice, takes_warm_start, Growth};
+// `Acceptance` is defined here, beside `SimParams`.
 
 use crate::cost::CostModel;
 use crate::error::Result;
@@ -42,12 +43,25 @@ pub enum ReplanPolicy {
     Always,
 }
 
+/// What makes a re-planned window good enough to stop growing it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Acceptance {
+    /// The route spliced from the window's piece is feasible all the way to the goal: the
+    /// vehicle never flies a route known to be blocked.
+    Route,
+    /// The window's piece is feasible (lfhh2019: "if F >= 2, W + 1"); a blockage beyond the
+    /// window waits for the next change's re-plan, so a loop with no later change can fly into
+    /// it (the after-the-fact check then fails the simulation).
+    Window,
+}
+
 /// The loop's parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SimParams {
     /// Waypoints ahead of the vehicle the first window reaches (W).
     pub window: usize,
     pub growth: Growth,
+    pub accept: Acceptance,
     pub policy: ReplanPolicy,
     /// Warm-start planners that take one from the old route's piece in the window.
     pub warm_start: bool,
@@ -60,11 +74,12 @@ pub struct SimParams {
 
 impl SimParams {
     /// lfhh2019's window rule (docs/papers/lfhh2019.md, sections IV-E and IV-F): W = 20,
-    /// W <- W + 1 while no feasible piece is found, a re-plan at every change, each from a
-    /// fresh population (no warm start).
+    /// W <- W + 1 while the window's piece is infeasible, a re-plan at every change, each from
+    /// a fresh population (no warm start).
     pub const LFHH2019: SimParams = SimParams {
         window: 20,
         growth: Growth::Add(1),
+        accept: Acceptance::Window,
         policy: ReplanPolicy::Always,
         warm_start: false,
         sensor_range: None,
@@ -78,6 +93,7 @@ impl Default for SimParams {
         SimParams {
             window: 20,
             growth: Growth::Double,
+            accept: Acceptance::Route,
             policy: ReplanPolicy::WhenInfeasible,
             warm_start: true,
             sensor_range: None,

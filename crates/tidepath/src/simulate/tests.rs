@@ -128,3 +128,50 @@ fn warm_starts_follow_the_planner_table_and_budgets_share_the_total() {
     assert_eq!(b.max_iterations, Some(5));
     assert!(b.stop.is_some() && b.started.is_none());
 }
+
+/// A disc across the far end of a 10-point route along y = 200: a window of 2 waypoints has a
+/// feasible piece, but the spliced route is blocked further on. lfhh2019's acceptance takes
+/// the first window; tidepath's default grows the window until the route to the goal is clear.
+#[test]
+fn the_window_rule_accepts_a_piece_or_the_whole_route() {
+    use crate::cost::{GeneralCost, GeneralWeights};
+    use crate::planner::registry;
+    use crate::world::{Obstacle, Shape};
+    let world = World {
+        obstacles: vec![Obstacle::fixed(Shape::Circle { center: crate::geom::Vec2::new(850.0, 200.0), radius: 40.0 })],
+        ..world_2d()
+    };
+    let route: Vec<Vec3> = (0..10).map(|i| v(50.0 + 100.0 * i as f64, 200.0)).collect();
+    let mission = Mission::new("m", vehicle(), route[0], route[9], 0.0);
+    let cost = GeneralCost::new(GeneralWeights::default().checked("cost.weights").unwrap());
+    let make = || registry().build("theta-star", None, None, &crate::encoding::EncodingSpec::default());
+    let per_replan = Termination::default().with_wall_time(std::time::Duration::from_secs(60));
+    let settings = ModelSettings::default();
+    let replan_with = |accept| {
+        let params = SimParams { window: 2, growth: Growth::Add(1), accept, ..SimParams::default() };
+        let setup = Setup {
+            world: &world,
+            mission: &mission,
+            changes: &[],
+            planner: &make,
+            cost: &cost,
+            settings: &settings,
+            params,
+            per_replan: &per_replan,
+            total: &Termination::default(),
+        };
+        window::replan(&setup, &world, &route, 0.0, &mut crate::rng::run_rng(1, 0), false).unwrap()
+    };
+    let (record, spliced) = replan_with(Acceptance::Window);
+    assert_eq!(record.windows, vec![2]);
+    assert!(record.reason.contains("the route after it is not"), "{}", record.reason);
+    let spliced = spliced.expect("the piece is accepted");
+    assert_eq!(&spliced[spliced.len() - 7..], &route[3..]);
+    // The route through the disc (850 +- 40 m) is kept.
+    let (record, spliced) = replan_with(Acceptance::Route);
+    assert_eq!(record.windows, vec![2, 3, 4, 5, 6, 7, 8, 9][..record.windows.len()].to_vec());
+    assert!(record.windows.last().copied().unwrap() >= 9, "{:?}", record.windows);
+    let spliced = spliced.expect("a route round the disc");
+    let model = crate::path::PathModel::new(&world, &mission, &settings);
+    assert!(model.violations(&spliced).is_empty());
+}

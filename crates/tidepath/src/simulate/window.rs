@@ -4,7 +4,7 @@
 
 use std::time::Instant;
 
-use super::{Replan, Setup};
+use super::{Acceptance, Replan, Setup};
 use crate::error::Result;
 use crate::geom::Vec3;
 use crate::mission::Mission;
@@ -69,7 +69,8 @@ pub fn replan_budget(per_replan: &Termination, total: &Termination) -> Terminati
 }
 
 /// Re-plans a window of `route` (its first point the vehicle's position at `t`) on `known`,
-/// growing the window until the spliced route is feasible to the goal. Returns the replan
+/// growing the window until the spliced route is feasible to the goal (or, with
+/// [`Acceptance::Window`], until the window's piece is). Returns the replan
 /// record and, when it succeeded, the new route. `warm_allowed` is false for the departure
 /// plan (there is no old route to start from).
 pub(super) fn replan(
@@ -120,9 +121,16 @@ pub(super) fn replan(
             let spliced = splice(m.path(), route, w);
             let whole = Mission { start: route[0], goal: s.mission.goal, departure_time: t, ..s.mission.clone() };
             let violations = PathModel::new(known, &whole, s.settings).violations(&spliced);
-            match violations.first() {
-                None => return Ok((record, Some(spliced))),
-                Some(v) => {
+            match (violations.first(), s.params.accept) {
+                (None, _) => return Ok((record, Some(spliced))),
+                (Some(v), Acceptance::Window) => {
+                    record.reason = format!(
+                        "the window's piece is feasible (accepted: the window is judged alone); the route after it is not: {}",
+                        v.message
+                    );
+                    return Ok((record, Some(spliced)));
+                }
+                (Some(v), Acceptance::Route) => {
                     record.reason =
                         format!("the window's piece is feasible, but the route after it is not: {}", v.message)
                 }
