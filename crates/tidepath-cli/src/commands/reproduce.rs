@@ -32,6 +32,10 @@ pub struct ReproduceArgs {
     /// Output folder for REPORT.md, per-experiment results and figures.
     #[arg(long, default_value = "reproduce")]
     pub out: PathBuf,
+    /// A reduced budget for a quick look (lfhh2019: a fifth of the generations, coarser sweeps);
+    /// the report states the budget it ran.
+    #[arg(long)]
+    pub quick: bool,
 }
 
 pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
@@ -59,6 +63,7 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
         reference: args.reference.clone(),
         stop: Some(crate::stop_flag()),
         time_limit_s: args.time_limit,
+        quick: args.quick,
     };
     let bar = std::sync::Mutex::new(None::<RunsBar>);
     let outcomes = reproduce(

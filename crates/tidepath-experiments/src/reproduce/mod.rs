@@ -5,6 +5,7 @@
 
 mod baselines;
 mod claims;
+mod lfhh2019;
 mod report;
 mod wpa2017;
 
@@ -32,6 +33,9 @@ pub struct ReproduceOptions {
     pub stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
     /// Wall-time limit per run (s), a safety net; `None`: the default cap.
     pub time_limit_s: Option<f64>,
+    /// A reduced budget for a quick look (`--quick`): each paper that has one says in its
+    /// report what it reduces; the others ignore it.
+    pub quick: bool,
 }
 
 impl ReproduceOptions {
@@ -91,6 +95,14 @@ pub const PAPERS: &[Paper] = &[
         citation: "Zhang et al. 2017 (wpa2017), section IV, Tables 2-5",
         params: &[],
         build: wpa2017::run,
+    },
+    Entry {
+        id: "lfhh2019",
+        description: "LFHH against FHH, FHH with LTS, EDA-G, adaptive DE, RRT* and PRM* re-planning in dynamic 2-D and \
+                      3-D worlds (Tables 2-3), its ablation (Tables 4-5) and parameter study (Figs. 15-16)",
+        citation: "Liu et al. 2019 (lfhh2019), section V, Tables 2-5, Figs. 15-16",
+        params: &[],
+        build: lfhh2019::run,
     },
 ];
 

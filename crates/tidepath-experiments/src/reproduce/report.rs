@@ -169,7 +169,10 @@ fn experiment_table(o: &ExperimentOutcome) -> String {
     if printed(|p| p.time_s) {
         columns.push(Column::numbers("time paper (s)", paper(|p| p.time_s), 4));
         columns.push(Column::numbers("time ours (s)", ours(|r| r.mean_wall_s), 4));
-        columns.push(Column::numbers("evaluations ours (mean)", ours(|r| r.mean_evaluations), 4));
+        // Runs that count no evaluations (a whole simulation is one run) have none to show.
+        if c.records.iter().any(|r| r.evaluations > 0) {
+            columns.push(Column::numbers("evaluations ours (mean)", ours(|r| r.mean_evaluations), 4));
+        }
     }
     // The "0" columns count runs at a function's optimum; scenarios have none.
     if c.is_functions() {
@@ -304,7 +307,11 @@ pub(super) fn stage(
             };
             let _ = writeln!(md, "- {}: **{}**{detail}", claim.text, verdict.label());
         }
-        let _ = writeln!(md, "\n![convergence]({id}/convergence.svg)\n\n![final costs]({id}/boxplot.svg)\n", id = o.id);
+        // Runs without a convergence history (a whole simulation is one run) have no curve to show.
+        if o.comparison.records.iter().any(|r| !r.history.is_empty()) {
+            let _ = writeln!(md, "\n![convergence]({}/convergence.svg)", o.id);
+        }
+        let _ = writeln!(md, "\n![final costs]({}/boxplot.svg)\n", o.id);
         if o.scenario.is_some() {
             let _ = writeln!(md, "![best path of each planner]({}/paths.svg)\n", o.id);
         }
@@ -348,8 +355,15 @@ mod tests {
     fn scenario_experiments_report_the_gap_to_their_reference() {
         use crate::compare::{compare_scenario, RunBudget};
         let scenario = tidepath_io::scenario::load("headland").unwrap();
-        let opts =
-            ReproduceOptions { runs: 2, master_seed: 3, jobs: 1, reference: None, stop: None, time_limit_s: None };
+        let opts = ReproduceOptions {
+            runs: 2,
+            master_seed: 3,
+            jobs: 1,
+            reference: None,
+            stop: None,
+            time_limit_s: None,
+            quick: false,
+        };
         assert_eq!(opts.reference_for(&scenario).as_deref(), Some("visibility"));
         let none = ReproduceOptions { reference: Some("none".into()), ..opts.clone() };
         assert_eq!(none.reference_for(&scenario), None);
@@ -445,8 +459,15 @@ mod tests {
             tables: Vec::new(),
             scenario: None,
         };
-        let opts =
-            ReproduceOptions { runs: 2, master_seed: 1, jobs: 1, reference: None, stop: None, time_limit_s: None };
+        let opts = ReproduceOptions {
+            runs: 2,
+            master_seed: 1,
+            jobs: 1,
+            reference: None,
+            stop: None,
+            time_limit_s: None,
+            quick: false,
+        };
         let paper = Paper { id: "test", description: "test", citation: "", params: &[], build: |_, _| Ok(Vec::new()) };
         let dir = tempfile::tempdir().unwrap();
         let mut out = Outputs::new();

@@ -15,7 +15,7 @@ const TINY: Scale = Scale {
 };
 
 fn opts(jobs: usize) -> ReproduceOptions {
-    ReproduceOptions { runs: 2, master_seed: 7, jobs, reference: None, stop: None, time_limit_s: None }
+    ReproduceOptions { runs: 2, master_seed: 7, jobs, reference: None, stop: None, time_limit_s: None, quick: false }
 }
 
 fn labels() -> Vec<String> {
