@@ -210,7 +210,7 @@ impl Objective for PathObjective<'_> {
     /// Free cells of the waypoint's section, built from its variables' bounds on first use.
     fn region_free(&self, group: usize, lo: &[f64], hi: &[f64]) -> Option<bool> {
         let (i, k, vars) = self.groups.get(group)?;
-        if lo.len() != vars.len() || hi.len() != vars.len() {
+        if lo.len() != vars.len() || hi.len() != vars.len() || vars.len() > super::section_cells::MAX_VARS {
             return None;
         }
         let cells = self.cells[group].get_or_init(|| {

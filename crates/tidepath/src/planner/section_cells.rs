@@ -16,6 +16,10 @@ use crate::path::PathModel;
 /// Cells per variable: lfhh2019's 20 x 20 sections.
 pub const CELLS: usize = 20;
 
+/// Most variables one waypoint has (the free encoding's x, y, z): queries keep their cell
+/// ranges on the stack.
+pub const MAX_VARS: usize = 3;
+
 /// One waypoint's cells over the box of its variables.
 #[derive(Clone, Debug)]
 pub struct SectionCells {
@@ -48,8 +52,11 @@ impl SectionCells {
         Self { lo: lo.to_vec(), width, n, free }
     }
 
-    /// Whether the box `lo..=hi` (clipped to the cells) overlaps a free cell.
+    /// Whether the box `lo..=hi` (clipped to the cells) overlaps a free cell. Allocation-free
+    /// (samplers ask it for every waypoint of every child).
     pub fn overlaps_free(&self, lo: &[f64], hi: &[f64]) -> bool {
+        let dims = self.n.len();
+        debug_assert!(dims <= MAX_VARS);
         let range = |d: usize| {
             let at = |v: f64| {
                 if self.width[d] > 0.0 {
@@ -60,8 +67,13 @@ impl SectionCells {
             };
             (at(lo[d].min(hi[d])), at(lo[d].max(hi[d])))
         };
-        let ranges: Vec<(usize, usize)> = (0..self.n.len()).map(range).collect();
-        let mut index = ranges.iter().map(|r| r.0).collect::<Vec<_>>();
+        let mut ranges = [(0usize, 0usize); MAX_VARS];
+        let mut index = [0usize; MAX_VARS];
+        for d in 0..dims {
+            ranges[d] = range(d);
+            index[d] = ranges[d].0;
+        }
+        let (ranges, index) = (&ranges[..dims], &mut index[..dims]);
         loop {
             let flat = index.iter().zip(&self.n).fold(0, |acc, (&i, &n)| acc * n + i);
             if self.free[flat] {
