@@ -36,6 +36,10 @@ pub struct ReproduceArgs {
     /// the report states the budget it ran.
     #[arg(long)]
     pub quick: bool,
+    /// Run only these parts of the paper, comma-separated (lfhh2019: table2, table3, ablation,
+    /// sweeps; its full run takes hours); default: all.
+    #[arg(long, value_delimiter = ',')]
+    pub only: Vec<String>,
 }
 
 pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
@@ -50,6 +54,7 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
         tidepath::planner::registry().get(id).map_err(|e| e.for_field("--reference"))?;
     }
     tidepath_experiments::reproduce::check_runs(args.runs)?;
+    tidepath_experiments::reproduce::check_only(paper.id, &args.only)?;
     if let Some(t) = args.time_limit {
         tidepath::termination::check_wall_time("--time-limit", t)?;
     }
@@ -64,6 +69,7 @@ pub fn run(args: &ReproduceArgs) -> Result<Outcome, Error> {
         stop: Some(crate::stop_flag()),
         time_limit_s: args.time_limit,
         quick: args.quick,
+        only: args.only.clone(),
     };
     let bar = std::sync::Mutex::new(None::<RunsBar>);
     let outcomes = reproduce(

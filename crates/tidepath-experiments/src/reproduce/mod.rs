@@ -36,6 +36,39 @@ pub struct ReproduceOptions {
     /// A reduced budget for a quick look (`--quick`): each paper that has one says in its
     /// report what it reduces; the others ignore it.
     pub quick: bool,
+    /// The parts of the paper to run (`--only`, [`parts`]); empty: all of them.
+    pub only: Vec<String>,
+}
+
+/// The parts of a reproduction `--only` can pick, for papers whose full run is long (lfhh2019:
+/// hours on two cores); empty for papers that always run everything.
+pub fn parts(paper: &str) -> &'static [&'static str] {
+    match paper {
+        "lfhh2019" => lfhh2019::PARTS,
+        _ => &[],
+    }
+}
+
+/// Checks `--only` against the paper's [`parts`].
+pub fn check_only(paper: &str, only: &[String]) -> Result<()> {
+    let known = parts(paper);
+    if only.is_empty() {
+        return Ok(());
+    }
+    if known.is_empty() {
+        return Err(Error::input("--only", format!("{paper} runs all its experiments; leave --only out")));
+    }
+    match only.iter().find(|p| !known.contains(&p.as_str())) {
+        Some(p) => Err(Error::input("--only", format!("`{p}` is not a part of {paper} (known: {})", known.join(", ")))),
+        None => Ok(()),
+    }
+}
+
+impl ReproduceOptions {
+    /// Whether part `id` runs: every part when `--only` is not given.
+    pub fn wants(&self, id: &str) -> bool {
+        self.only.is_empty() || self.only.iter().any(|p| p == id)
+    }
 }
 
 impl ReproduceOptions {
@@ -98,7 +131,8 @@ pub const PAPERS: &[Paper] = &[
     },
     Entry {
         id: "lfhh2019",
-        description: "LFHH against FHH, FHH with LTS, EDA-G, adaptive DE, RRT* and PRM* re-planning in dynamic 2-D and \
+        description:
+            "LFHH against FHH, FHH with LTS, EDA-G, adaptive DE, RRT* and PRM* re-planning in dynamic 2-D and \
                       3-D worlds (Tables 2-3), its ablation (Tables 4-5) and parameter study (Figs. 15-16)",
         citation: "Liu et al. 2019 (lfhh2019), section V, Tables 2-5, Figs. 15-16",
         params: &[],
@@ -129,6 +163,7 @@ pub fn reproduce(
     figures: &dyn super::output::FigureRenderer,
 ) -> Result<Vec<ExperimentOutcome>> {
     check_runs(opts.runs)?;
+    check_only(paper.id, &opts.only)?;
     let outcomes = (paper.build)(opts, progress)?;
     report::stage(out, paper, opts, &outcomes, dir, figures)?;
     Ok(outcomes)

@@ -363,6 +363,7 @@ mod tests {
             stop: None,
             time_limit_s: None,
             quick: false,
+            only: Vec::new(),
         };
         assert_eq!(opts.reference_for(&scenario).as_deref(), Some("visibility"));
         let none = ReproduceOptions { reference: Some("none".into()), ..opts.clone() };
@@ -467,6 +468,7 @@ mod tests {
             stop: None,
             time_limit_s: None,
             quick: false,
+            only: Vec::new(),
         };
         let paper = Paper { id: "test", description: "test", citation: "", params: &[], build: |_, _| Ok(Vec::new()) };
         let dir = tempfile::tempdir().unwrap();

@@ -389,6 +389,10 @@ fn only(runs: &Runs, planners: &[&str], opts: &ReproduceOptions, scale: &Scale) 
     }
 }
 
+/// The parts `--only` picks: Table 2, Table 3, the ablation (Tables 4-5; with LFHH's own runs
+/// when its table is not run) and the parameter sweeps (Figs. 15-16).
+pub const PARTS: &[&str] = &["table2", "table3", "ablation", "sweeps"];
+
 pub(super) fn run_scaled(
     opts: &ReproduceOptions,
     progress: &(dyn Fn(usize, usize) + Sync),
@@ -397,13 +401,22 @@ pub(super) fn run_scaled(
     let runs = opts.runs as usize;
     let cases_2d = &paper::CASES_2D[..scale.cases_2d.min(3)];
     let cases_3d = &paper::CASES_3D[..scale.cases_3d.min(6)];
-    let n_alg = paper::ALGORITHMS.len();
-    let sweep_points = scale.lambdas.len() + scale.periods.len() + scale.populations.len();
+    let (table2, table3, ablation, sweeping) =
+        (opts.wants("table2"), opts.wants("table3"), opts.wants("ablation"), opts.wants("sweeps"));
+    // A table's runs when it is wanted; LFHH's alone when only the ablation needs them.
+    let first = |table: bool| match (table, ablation) {
+        (true, _) => Some(algorithms()),
+        (false, true) => Some(vec![Variant::plain("lfhh")]),
+        (false, false) => None,
+    };
+    let (first_2d, first_3d) = (first(table2), first(table3));
+    let n = |v: &Option<Vec<Variant>>| v.as_ref().map_or(0, Vec::len);
+    let sweep_points = if sweeping { scale.lambdas.len() + scale.periods.len() + scale.populations.len() } else { 0 };
     let counts = [
-        cases_2d.len() * n_alg * runs,
-        cases_3d.len() * n_alg * runs,
-        cases_2d.len() * 3 * runs,
-        cases_3d.len() * 3 * runs,
+        cases_2d.len() * n(&first_2d) * runs,
+        cases_3d.len() * n(&first_3d) * runs,
+        cases_2d.len() * 3 * runs * usize::from(ablation),
+        cases_3d.len() * 3 * runs * usize::from(ablation),
         sweep_points * runs,
     ];
     let total: usize = counts.iter().sum();
@@ -411,23 +424,28 @@ pub(super) fn run_scaled(
     let step = |k: usize| move |n: usize| progress(offset(k) + n, total);
     let mut outcomes = Vec::new();
 
-    let t2 = run_cases(opts, scale, cases_2d, &algorithms(), &step(0))?;
+    let mut t2 = None;
+    if let Some(v) = &first_2d {
+        t2 = Some(run_cases(opts, scale, cases_2d, v, &step(0))?);
+    }
     let mut t3 = None;
-    if !stopped(opts) && !cases_3d.is_empty() {
-        t3 = Some(run_cases(opts, scale, cases_3d, &algorithms(), &step(1))?);
+    if let (false, false, Some(v)) = (stopped(opts), cases_3d.is_empty(), &first_3d) {
+        t3 = Some(run_cases(opts, scale, cases_3d, v, &step(1))?);
     }
     let mut ablation_2d = None;
-    if !stopped(opts) {
+    if let (false, true, Some(t2)) = (stopped(opts), ablation, &t2) {
         let rest = run_cases(opts, scale, cases_2d, &ablations(), &step(2))?;
-        ablation_2d = Some(merged(only(&t2, &["lfhh"], opts, scale), rest, opts, scale));
+        ablation_2d = Some(merged(only(t2, &["lfhh"], opts, scale), rest, opts, scale));
     }
     let mut ablation_3d = None;
-    if let (false, Some(t3)) = (stopped(opts), &t3) {
+    if let (false, true, Some(t3)) = (stopped(opts), ablation, &t3) {
         let rest = run_cases(opts, scale, cases_3d, &ablations(), &step(3))?;
         ablation_3d = Some(merged(only(t3, &["lfhh"], opts, scale), rest, opts, scale));
     }
-    outcomes.push(tables::table2(opts, scale, t2));
-    if let Some(t3) = t3 {
+    if let (true, Some(t2)) = (table2, t2) {
+        outcomes.push(tables::table2(opts, scale, t2));
+    }
+    if let (true, Some(t3)) = (table3, t3) {
         outcomes.push(tables::table3(opts, scale, t3));
     }
     if let Some(a) = ablation_2d {
@@ -438,7 +456,7 @@ pub(super) fn run_scaled(
     }
     let mut done = offset(4);
     for sweep in sweeps(scale) {
-        if stopped(opts) {
+        if stopped(opts) || !sweeping {
             break;
         }
         let base = done;

@@ -23,7 +23,16 @@ const TINY: Scale = Scale {
 };
 
 fn opts(jobs: usize) -> ReproduceOptions {
-    ReproduceOptions { runs: 2, master_seed: 5, jobs, reference: None, stop: None, time_limit_s: None, quick: false }
+    ReproduceOptions {
+        runs: 2,
+        master_seed: 5,
+        jobs,
+        reference: None,
+        stop: None,
+        time_limit_s: None,
+        quick: false,
+        only: Vec::new(),
+    }
 }
 
 fn v(x: f64, y: f64, z: f64) -> Vec3 {
@@ -272,4 +281,24 @@ fn a_stopped_reproduction_keeps_the_runs_that_finished() {
     out.commit().unwrap();
     let md = std::fs::read_to_string(dir.path().join("REPORT.md")).unwrap();
     assert!(md.contains("> **Incomplete**: the run was interrupted (Ctrl-C)."), "{md}");
+}
+
+/// `--only` runs the parts asked for: the ablation alone runs LFHH's own rows and the three
+/// ablated ones, but prints no Table 2 or 3; an unknown part, or `--only` for a paper without
+/// parts, is refused naming the flag.
+#[test]
+fn only_runs_the_parts_asked_for() {
+    let o = ReproduceOptions { only: vec!["ablation".into()], ..opts(1) };
+    let finished = Mutex::new(0usize);
+    let outcomes = run_scaled(&o, &|n, _| *finished.lock().unwrap() = n, &TINY).unwrap();
+    let ids: Vec<&str> = outcomes.iter().map(|e| e.id.as_str()).collect();
+    assert!(ids.iter().all(|id| id.starts_with("table4") || id.contains("ablation")), "{ids:?}");
+    assert_eq!(ids.len(), 2, "{ids:?}");
+    // LFHH and three ablated rows, one 2-D and one 3-D case, two runs each.
+    assert_eq!(*finished.lock().unwrap(), 2 * 4 * 2);
+    let e = crate::reproduce::check_only("lfhh2019", &["table9".into()]).unwrap_err().to_string();
+    assert!(e.starts_with("--only") && e.contains("table2, table3, ablation, sweeps"), "{e}");
+    let e = crate::reproduce::check_only("wpa2017", &["table2".into()]).unwrap_err().to_string();
+    assert!(e.starts_with("--only"), "{e}");
+    crate::reproduce::check_only("lfhh2019", &["sweeps".into(), "table3".into()]).unwrap();
 }

@@ -15,7 +15,16 @@ const TINY: Scale = Scale {
 };
 
 fn opts(jobs: usize) -> ReproduceOptions {
-    ReproduceOptions { runs: 2, master_seed: 7, jobs, reference: None, stop: None, time_limit_s: None, quick: false }
+    ReproduceOptions {
+        runs: 2,
+        master_seed: 7,
+        jobs,
+        reference: None,
+        stop: None,
+        time_limit_s: None,
+        quick: false,
+        only: Vec::new(),
+    }
 }
 
 fn labels() -> Vec<String> {
