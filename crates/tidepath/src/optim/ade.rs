@@ -30,7 +30,7 @@
 
 use rand::Rng as _;
 
-use super::de::bounce_to_midpoint;
+use super::de::{partners, rand1_bin, select_greedy};
 use super::{Context, Optimizer, Population, DEFAULT_ITERATIONS, MAX_POPULATION};
 use crate::error::Result;
 use crate::params::{field_error, Bound, Checked, Range};
@@ -157,49 +157,16 @@ impl Optimizer for Ade {
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
-        let n = self.x.len();
-        let dim = self.x.dim();
         let f = f_schedule(self.params.f0, self.g, self.big_g);
         let (alpha, beta) = (self.params.alpha, self.params.beta);
-        for i in 0..n {
-            let r1 = loop {
-                let r = ctx.rng().random_range(0..n);
-                if r != i {
-                    break r;
-                }
-            };
-            let r2 = loop {
-                let r = ctx.rng().random_range(0..n);
-                if r != i && r != r1 {
-                    break r;
-                }
-            };
-            let r3 = loop {
-                let r = ctx.rng().random_range(0..n);
-                if r != i && r != r1 && r != r2 {
-                    break r;
-                }
-            };
-            let jrand = ctx.rng().random_range(0..dim.max(1));
+        for i in 0..self.x.len() {
+            let (r, jrand) = partners(ctx, self.x.len(), i, self.x.dim());
             let cr = alpha + beta * ctx.rng().random::<f64>();
             fill_unit_f64(ctx.rng(), &mut self.u);
-            let (lower, upper) = (&ctx.lower()[..dim], &ctx.upper()[..dim]);
-            let (parent, a, b, c) = (self.x.row(i), self.x.row(r1), self.x.row(r2), self.x.row(r3));
-            let trial = self.trial.row_mut(i);
-            let sources = parent.iter().zip(a).zip(b.iter().zip(c)).zip(lower.iter().zip(upper)).zip(&self.u);
-            for (j, (t, ((((&p, &a), (&b, &c)), (&lo, &hi)), &u))) in trial.iter_mut().zip(sources).enumerate() {
-                let mutant = bounce_to_midpoint(a + f * (b - c), p, lo, hi);
-                *t = if (u < cr) | (j == jrand) { mutant } else { p };
-            }
-            ctx.repair(trial);
+            rand1_bin(ctx, &self.x, i, r, jrand, f, cr, &self.u, self.trial.row_mut(i));
         }
         ctx.evaluate_population(&self.trial, &mut self.trial_cost);
-        for i in 0..n {
-            if self.trial_cost[i] <= self.cost[i] {
-                self.cost[i] = self.trial_cost[i];
-                self.x.copy_row_from(i, &self.trial, i);
-            }
-        }
+        select_greedy(&mut self.x, &mut self.cost, &self.trial, &self.trial_cost);
         self.g += 1;
     }
 }

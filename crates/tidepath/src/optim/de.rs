@@ -107,49 +107,67 @@ impl Optimizer for De {
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
-        let n = self.x.len();
-        let dim = self.x.dim();
         let (f, cr) = (self.params.f, self.params.cr);
-        for i in 0..n {
-            let r1 = loop {
-                let r = ctx.rng().random_range(0..n);
-                if r != i {
-                    break r;
-                }
-            };
-            let r2 = loop {
-                let r = ctx.rng().random_range(0..n);
-                if r != i && r != r1 {
-                    break r;
-                }
-            };
-            let r3 = loop {
-                let r = ctx.rng().random_range(0..n);
-                if r != i && r != r1 && r != r2 {
-                    break r;
-                }
-            };
-            let jrand = ctx.rng().random_range(0..dim.max(1));
+        for i in 0..self.x.len() {
+            let (r, jrand) = partners(ctx, self.x.len(), i, self.x.dim());
             // One U(0,1) per component, drawn in bulk into a reused buffer.
             fill_unit_f64(ctx.rng(), &mut self.u);
-            let (lower, upper) = (&ctx.lower()[..dim], &ctx.upper()[..dim]);
-            let (parent, a, b, c) = (self.x.row(i), self.x.row(r1), self.x.row(r2), self.x.row(r3));
-            let trial = self.trial.row_mut(i);
-            // The mutant component is computed for every j (it is pure) and kept where the
-            // crossover takes it, so the loop has no branch.
-            let sources = parent.iter().zip(a).zip(b.iter().zip(c)).zip(lower.iter().zip(upper)).zip(&self.u);
-            for (j, (t, ((((&p, &a), (&b, &c)), (&lo, &hi)), &u))) in trial.iter_mut().zip(sources).enumerate() {
-                let mutant = bounce_to_midpoint(a + f * (b - c), p, lo, hi);
-                *t = if (u < cr) | (j == jrand) { mutant } else { p };
-            }
-            ctx.repair(trial);
+            rand1_bin(ctx, &self.x, i, r, jrand, f, cr, &self.u, self.trial.row_mut(i));
         }
         ctx.evaluate_population(&self.trial, &mut self.trial_cost);
-        for i in 0..n {
-            if self.trial_cost[i] <= self.cost[i] {
-                self.cost[i] = self.trial_cost[i];
-                self.x.copy_row_from(i, &self.trial, i);
+        select_greedy(&mut self.x, &mut self.cost, &self.trial, &self.trial_cost);
+    }
+}
+
+/// Target `i`'s three partners r1, r2, r3 (distinct, none `i`; drawn in that order by
+/// rejection) and the forced component jrand: the first draws of DE/rand/1/bin per target.
+pub(crate) fn partners(ctx: &mut Context<'_>, n: usize, i: usize, dim: usize) -> ([usize; 3], usize) {
+    let mut r = [0usize; 3];
+    for k in 0..3 {
+        r[k] = loop {
+            let c = ctx.rng().random_range(0..n);
+            if c != i && !r[..k].contains(&c) {
+                break c;
             }
+        };
+    }
+    (r, ctx.rng().random_range(0..dim.max(1)))
+}
+
+/// Writes target `i`'s trial vector into `trial`: the mutant x_r1 + f (x_r2 - x_r3), each
+/// component outside the box bounced to the midpoint with the parent's, taken where
+/// `u_j < cr` or j = jrand (binomial crossover, eq. 4), then the objective's repair.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn rand1_bin(
+    ctx: &Context<'_>,
+    x: &Population,
+    i: usize,
+    [r1, r2, r3]: [usize; 3],
+    jrand: usize,
+    f: f64,
+    cr: f64,
+    u: &[f64],
+    trial: &mut [f64],
+) {
+    let dim = x.dim();
+    let (lower, upper) = (&ctx.lower()[..dim], &ctx.upper()[..dim]);
+    let (parent, a, b, c) = (x.row(i), x.row(r1), x.row(r2), x.row(r3));
+    // The mutant component is computed for every j (it is pure) and kept where the
+    // crossover takes it, so the loop has no branch.
+    let sources = parent.iter().zip(a).zip(b.iter().zip(c)).zip(lower.iter().zip(upper)).zip(u);
+    for (j, (t, ((((&p, &a), (&b, &c)), (&lo, &hi)), &u))) in trial.iter_mut().zip(sources).enumerate() {
+        let mutant = bounce_to_midpoint(a + f * (b - c), p, lo, hi);
+        *t = if (u < cr) | (j == jrand) { mutant } else { p };
+    }
+    ctx.repair(trial);
+}
+
+/// DE's one-to-one selection: each target is replaced by its trial when the trial is no worse.
+pub(crate) fn select_greedy(x: &mut Population, cost: &mut [f64], trial: &Population, trial_cost: &[f64]) {
+    for i in 0..x.len() {
+        if trial_cost[i] <= cost[i] {
+            cost[i] = trial_cost[i];
+            x.copy_row_from(i, trial, i);
         }
     }
 }
