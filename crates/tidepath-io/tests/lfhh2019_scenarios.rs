@@ -216,3 +216,21 @@ fn simulate_lfhh_2d_with_lfhh_reaches_the_goal_in_six_phases() {
     let r = s.simulate(&SimRequest { accept: Some(Acceptance::Route), ..req }).unwrap();
     six_phases(&s, &r.sim);
 }
+
+/// `tidepath plan lfhh-3d-1 --planner lfhh` (here 40 generations of 50 instead of 300 of 200,
+/// to keep a debug-build test short) plans a path that tidepath judges feasible and that meets
+/// the paper's rule F < 2, for several seeds.
+#[test]
+fn lfhh_plans_the_3d_scenario_feasible_under_both_rules() {
+    use tidepath_io::scenario::PlanRequest;
+    let s = scenario("lfhh-3d-1");
+    for seed in 1..=3 {
+        let req = PlanRequest { iterations: Some(40), population: Some(50), seed, ..PlanRequest::default() };
+        let v: serde_json::Value = serde_json::from_str(&s.plan(&req, &mut |_| {}).unwrap().to_json()).unwrap();
+        let m = &v["missions"][0];
+        assert_eq!(v["planner"], "lfhh", "seed {seed}");
+        assert_eq!(m["feasible"], true, "seed {seed}: {m}");
+        assert!(m["cost"].as_f64().unwrap() < 2.0, "seed {seed}");
+        assert_eq!(m["model_rule"], serde_json::json!({ "below": 2.0, "met": true }), "seed {seed}");
+    }
+}
