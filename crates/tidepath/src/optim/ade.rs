@@ -30,11 +30,10 @@
 
 use rand::Rng as _;
 
-use super::de::{partners, rand1_bin, select_greedy};
-use super::{Context, Optimizer, Population, DEFAULT_ITERATIONS, MAX_POPULATION};
+use super::de::Generations;
+use super::{Context, Optimizer, DEFAULT_ITERATIONS, MAX_POPULATION};
 use crate::error::Result;
 use crate::params::{field_error, Bound, Checked, Range};
-use crate::rng::fill_unit_f64;
 use crate::termination::MAX_COUNT;
 
 crate::params! {
@@ -87,11 +86,7 @@ pub fn f_schedule(f0: f64, g: u64, big_g: u64) -> f64 {
 #[derive(Clone, Debug)]
 pub struct Ade {
     params: AdeParams,
-    x: Population,
-    cost: Vec<f64>,
-    trial: Population,
-    trial_cost: Vec<f64>,
-    u: Vec<f64>,
+    gens: Generations,
     /// Generations done.
     g: u64,
     /// The schedule's G for this run.
@@ -100,16 +95,7 @@ pub struct Ade {
 
 impl Ade {
     pub fn new(params: Checked<AdeParams>) -> Self {
-        Self {
-            params: params.into_inner(),
-            x: Population::zeros(0, 0),
-            cost: Vec::new(),
-            trial: Population::zeros(0, 0),
-            trial_cost: Vec::new(),
-            u: Vec::new(),
-            g: 0,
-            big_g: DEFAULT_ITERATIONS,
-        }
+        Self { params: params.into_inner(), gens: Generations::empty(), g: 0, big_g: DEFAULT_ITERATIONS }
     }
 
     pub fn params(&self) -> &AdeParams {
@@ -140,18 +126,9 @@ impl Optimizer for Ade {
     }
 
     fn init(&mut self, ctx: &mut Context<'_>) {
-        let n = self.params.population;
         // Unlimited runs have u64::MAX evaluations; more than any limit can be (MAX_COUNT).
         let limited = ctx.remaining_evaluations() <= MAX_COUNT;
-        self.x = Population::initial(n, ctx);
-        for i in 0..n {
-            ctx.repair(self.x.row_mut(i));
-        }
-        self.cost = vec![f64::INFINITY; n];
-        ctx.evaluate_population(&self.x, &mut self.cost);
-        self.trial = self.x.clone();
-        self.trial_cost = vec![f64::INFINITY; n];
-        self.u = vec![0.0; ctx.dim()];
+        self.gens.init(self.params.population, ctx);
         self.g = 0;
         self.big_g = self.generation_budget(ctx.max_iterations(), ctx.remaining_evaluations(), limited);
     }
@@ -159,14 +136,7 @@ impl Optimizer for Ade {
     fn step(&mut self, ctx: &mut Context<'_>) {
         let f = f_schedule(self.params.f0, self.g, self.big_g);
         let (alpha, beta) = (self.params.alpha, self.params.beta);
-        for i in 0..self.x.len() {
-            let (r, jrand) = partners(ctx, self.x.len(), i, self.x.dim());
-            let cr = alpha + beta * ctx.rng().random::<f64>();
-            fill_unit_f64(ctx.rng(), &mut self.u);
-            rand1_bin(ctx, &self.x, i, r, jrand, f, cr, &self.u, self.trial.row_mut(i));
-        }
-        ctx.evaluate_population(&self.trial, &mut self.trial_cost);
-        select_greedy(&mut self.x, &mut self.cost, &self.trial, &self.trial_cost);
+        self.gens.step(ctx, f, |ctx| alpha + beta * ctx.rng().random::<f64>());
         self.g += 1;
     }
 }
@@ -248,7 +218,7 @@ mod tests {
             &mut |_| {},
         );
         assert!(r.best_cost < 1e-8, "{}", r.best_cost);
-        assert!(ade.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
+        assert!(ade.gens.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
         assert!(r.history.windows(2).all(|w| w[1] <= w[0]));
     }
 

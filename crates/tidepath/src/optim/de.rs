@@ -46,24 +46,63 @@ crate::params! {
 #[derive(Clone, Debug)]
 pub struct De {
     params: DeParams,
-    x: Population,
-    cost: Vec<f64>,
+    gens: Generations,
+}
+
+/// The state of a DE/rand/1/bin run and its two phases, shared by `de` and `ade` (which
+/// differ only in where F and CR come from).
+#[derive(Clone, Debug)]
+pub(crate) struct Generations {
+    pub x: Population,
+    pub cost: Vec<f64>,
     trial: Population,
     trial_cost: Vec<f64>,
     /// One target's crossover draws (reused, so a step does not allocate).
     u: Vec<f64>,
 }
 
-impl De {
-    pub fn new(params: Checked<DeParams>) -> Self {
+impl Generations {
+    pub fn empty() -> Self {
         Self {
-            params: params.into_inner(),
             x: Population::zeros(0, 0),
             cost: Vec::new(),
             trial: Population::zeros(0, 0),
             trial_cost: Vec::new(),
             u: Vec::new(),
         }
+    }
+
+    /// `n` individuals drawn in the box (warm starts first), repaired and evaluated.
+    pub fn init(&mut self, n: usize, ctx: &mut Context<'_>) {
+        self.x = Population::initial(n, ctx);
+        for i in 0..n {
+            ctx.repair(self.x.row_mut(i));
+        }
+        self.cost = vec![f64::INFINITY; n];
+        ctx.evaluate_population(&self.x, &mut self.cost);
+        self.trial = self.x.clone();
+        self.trial_cost = vec![f64::INFINITY; n];
+        self.u = vec![0.0; ctx.dim()];
+    }
+
+    /// One generation with weight `f`; `cr` gives each target's crossover rate after its
+    /// partners and jrand are drawn (`ade` draws it there; `de` draws nothing).
+    pub fn step(&mut self, ctx: &mut Context<'_>, f: f64, mut cr: impl FnMut(&mut Context<'_>) -> f64) {
+        for i in 0..self.x.len() {
+            let (r, jrand) = partners(ctx, self.x.len(), i, self.x.dim());
+            let cr = cr(ctx);
+            // One U(0,1) per component, drawn in bulk into a reused buffer.
+            fill_unit_f64(ctx.rng(), &mut self.u);
+            rand1_bin(ctx, &self.x, i, r, jrand, f, cr, &self.u, self.trial.row_mut(i));
+        }
+        ctx.evaluate_population(&self.trial, &mut self.trial_cost);
+        select_greedy(&mut self.x, &mut self.cost, &self.trial, &self.trial_cost);
+    }
+}
+
+impl De {
+    pub fn new(params: Checked<DeParams>) -> Self {
+        Self { params: params.into_inner(), gens: Generations::empty() }
     }
 
     pub fn params(&self) -> &DeParams {
@@ -94,34 +133,18 @@ impl Optimizer for De {
     }
 
     fn init(&mut self, ctx: &mut Context<'_>) {
-        let n = self.params.population;
-        self.x = Population::initial(n, ctx);
-        for i in 0..n {
-            ctx.repair(self.x.row_mut(i));
-        }
-        self.cost = vec![f64::INFINITY; n];
-        ctx.evaluate_population(&self.x, &mut self.cost);
-        self.trial = self.x.clone();
-        self.trial_cost = vec![f64::INFINITY; n];
-        self.u = vec![0.0; ctx.dim()];
+        self.gens.init(self.params.population, ctx);
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
-        let (f, cr) = (self.params.f, self.params.cr);
-        for i in 0..self.x.len() {
-            let (r, jrand) = partners(ctx, self.x.len(), i, self.x.dim());
-            // One U(0,1) per component, drawn in bulk into a reused buffer.
-            fill_unit_f64(ctx.rng(), &mut self.u);
-            rand1_bin(ctx, &self.x, i, r, jrand, f, cr, &self.u, self.trial.row_mut(i));
-        }
-        ctx.evaluate_population(&self.trial, &mut self.trial_cost);
-        select_greedy(&mut self.x, &mut self.cost, &self.trial, &self.trial_cost);
+        let cr = self.params.cr;
+        self.gens.step(ctx, self.params.f, |_| cr);
     }
 }
 
 /// Target `i`'s three partners r1, r2, r3 (distinct, none `i`; drawn in that order by
 /// rejection) and the forced component jrand: the first draws of DE/rand/1/bin per target.
-pub(crate) fn partners(ctx: &mut Context<'_>, n: usize, i: usize, dim: usize) -> ([usize; 3], usize) {
+fn partners(ctx: &mut Context<'_>, n: usize, i: usize, dim: usize) -> ([usize; 3], usize) {
     let mut r = [0usize; 3];
     for k in 0..3 {
         r[k] = loop {
@@ -138,7 +161,7 @@ pub(crate) fn partners(ctx: &mut Context<'_>, n: usize, i: usize, dim: usize) ->
 /// component outside the box bounced to the midpoint with the parent's, taken where
 /// `u_j < cr` or j = jrand (binomial crossover, eq. 4), then the objective's repair.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn rand1_bin(
+fn rand1_bin(
     ctx: &Context<'_>,
     x: &Population,
     i: usize,
@@ -163,7 +186,7 @@ pub(crate) fn rand1_bin(
 }
 
 /// DE's one-to-one selection: each target is replaced by its trial when the trial is no worse.
-pub(crate) fn select_greedy(x: &mut Population, cost: &mut [f64], trial: &Population, trial_cost: &[f64]) {
+fn select_greedy(x: &mut Population, cost: &mut [f64], trial: &Population, trial_cost: &[f64]) {
     for i in 0..x.len() {
         if trial_cost[i] <= cost[i] {
             cost[i] = trial_cost[i];
@@ -214,8 +237,8 @@ mod tests {
         let r =
             run(&mut de, &obj, &Termination::iterations(200), &mut crate::rng::run_rng(1, 0), false, &[], &mut |_| {});
         assert!(r.best_cost < 1e-8, "{}", r.best_cost);
-        assert!(de.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
-        let min = de.cost.iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(de.gens.x.rows().all(|x| x.iter().all(|v| (-5.12..=5.12).contains(v))));
+        let min = de.gens.cost.iter().copied().fold(f64::INFINITY, f64::min);
         assert_eq!(min, r.best_cost);
     }
 }
