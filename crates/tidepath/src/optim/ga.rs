@@ -61,6 +61,25 @@ impl Word for GaCoding {
 
 crate::params::word_param!(GaCoding);
 
+/// What the mutation probability applies to: amfa2015's "p_m = 1/n" can be read either way
+/// (docs/papers/amfa2015.md A8).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum MutationScope {
+    /// Each gene (real) or bit (binary) mutates with probability `mutation_rate`.
+    #[default]
+    Gene,
+    /// Each child mutates with probability `mutation_rate`; a mutated child has one gene
+    /// (real) or one bit (binary), drawn uniformly, mutated.
+    Chromosome,
+}
+
+impl Word for MutationScope {
+    const WORDS: &'static [(&'static str, Self)] =
+        &[("gene", MutationScope::Gene), ("chromosome", MutationScope::Chromosome)];
+}
+
+crate::params::word_param!(MutationScope);
+
 crate::params! {
     /// GA parameters. Defaults: wpa2017's real-coded GA.
     pub struct GaParams {
@@ -73,6 +92,9 @@ crate::params! {
         /// Mutation probability per gene (real) or per bit (binary); absent: 1/D with D the
         /// number of variables.
         mutation_rate: Option<f64> = None, Range::closed(0.0, 1.0), "docs/papers/shared.md#ga";
+        /// Whether `mutation_rate` applies per gene or bit ("gene") or per child
+        /// ("chromosome": one gene or bit of a mutated child changes).
+        mutation_scope: MutationScope = MutationScope::Gene, Range::Choice(&["gene", "chromosome"]), "docs/papers/amfa2015.md A8";
         /// Bits per variable for the binary coding (ignored by the real coding).
         bits: u32 = 20, Range::integer(1, 52), "amfa2015 section 5";
         /// Best individuals copied unchanged; below the population.
@@ -104,6 +126,7 @@ impl GaParams {
             population: 50,
             crossover_rate: 0.8,
             mutation_rate: None,
+            mutation_scope: MutationScope::Gene,
             bits: 20,
             elitism: 1,
             sigma_fraction: 0.1,
@@ -118,10 +141,25 @@ impl GaParams {
             population: 40,
             crossover_rate: 0.6,
             mutation_rate: None,
+            mutation_scope: MutationScope::Gene,
             bits: 20,
             elitism: 1,
             sigma_fraction: 0.1,
         }
+    }
+}
+
+impl GaParams {
+    /// amfa2015's GA under the second reading of "p_m = 1/n": 1/(20 D) per bit, about one
+    /// flip per chromosome on average (docs/papers/amfa2015.md A8).
+    pub fn amfa2015_per_bit_small(dim: usize) -> Self {
+        Self { mutation_rate: Some(1.0 / (dim.max(1) as f64 * 20.0)), ..Self::amfa2015() }
+    }
+
+    /// amfa2015's GA under the third reading: each chromosome mutates with probability 1/D,
+    /// one random bit flipped (docs/papers/amfa2015.md A8).
+    pub fn amfa2015_per_chromosome() -> Self {
+        Self { mutation_scope: MutationScope::Chromosome, ..Self::amfa2015() }
     }
 }
 
@@ -283,8 +321,24 @@ impl Ga {
     }
 
     /// Gaussian mutation of a real-coded child, then clamp to the box (`bounds`: lower, upper).
-    fn mutate_real(child: &mut [f64], pm: f64, sigma: &[f64], bounds: (&[f64], &[f64]), rng: &mut Rng) {
+    fn mutate_real(
+        child: &mut [f64],
+        pm: f64,
+        scope: MutationScope,
+        sigma: &[f64],
+        bounds: (&[f64], &[f64]),
+        rng: &mut Rng,
+    ) {
         let n = child.len();
+        if scope == MutationScope::Chromosome {
+            // One U(0,1) for the child; when it mutates, the gene, then its normal step.
+            if rng.random::<f64>() < pm && n > 0 {
+                let d = rng.random_range(0..n);
+                let z: f64 = rng.sample(StandardNormal);
+                child[d] = (child[d] + sigma[d] * z).clamp(bounds.0[d], bounds.1[d]);
+            }
+            return;
+        }
         let (sigma, lower, upper) = (&sigma[..n], &bounds.0[..n], &bounds.1[..n]);
         for d in 0..n {
             let u: f64 = rng.random();
@@ -297,7 +351,17 @@ impl Ga {
 
     /// Bit-flip mutation: one U(0,1) per bit, most significant bit of variable 0 first. The
     /// draws go through `u` (one per bit of `child`), drawn in bulk.
-    fn mutate_bits(child: &mut [u64], pm: f64, bits: u32, u: &mut [f64], rng: &mut Rng) {
+    fn mutate_bits(child: &mut [u64], pm: f64, scope: MutationScope, bits: u32, u: &mut [f64], rng: &mut Rng) {
+        if scope == MutationScope::Chromosome {
+            // One U(0,1) for the child; when it mutates, the bit (0 = variable 0's most
+            // significant bit).
+            let len = child.len() * bits as usize;
+            if rng.random::<f64>() < pm && len > 0 {
+                let b = rng.random_range(0..len);
+                child[b / bits as usize] ^= 1u64 << (bits as usize - 1 - b % bits as usize);
+            }
+            return;
+        }
         fill_unit_f64(rng, u);
         for (word, u) in child.iter_mut().zip(u.chunks_exact(bits as usize)) {
             for (j, &u) in (0..bits).rev().zip(u) {
@@ -380,6 +444,7 @@ impl Optimizer for Ga {
         let bits = self.params.bits;
         let pc = self.params.crossover_rate;
         let pm = self.pm;
+        let scope = self.params.mutation_scope;
         let binary = self.binary();
 
         // Rank (NaN last) for elitism.
@@ -408,11 +473,11 @@ impl Optimizer for Ga {
                     let cut = ctx.rng().random_range(1..len);
                     one_point_bits(&mut self.ka, &mut self.kb, bits, cut);
                 }
-                Self::mutate_bits(&mut self.ka, pm, bits, &mut self.bit_draws, ctx.rng());
+                Self::mutate_bits(&mut self.ka, pm, scope, bits, &mut self.bit_draws, ctx.rng());
                 self.off_chrom[k * dim..(k + 1) * dim].copy_from_slice(&self.ka);
                 Self::decode_into(&self.ka, bits, self.off_x.row_mut(k), ctx);
                 if second {
-                    Self::mutate_bits(&mut self.kb, pm, bits, &mut self.bit_draws, ctx.rng());
+                    Self::mutate_bits(&mut self.kb, pm, scope, bits, &mut self.bit_draws, ctx.rng());
                     self.off_chrom[(k + 1) * dim..(k + 2) * dim].copy_from_slice(&self.kb);
                     Self::decode_into(&self.kb, bits, self.off_x.row_mut(k + 1), ctx);
                 }
@@ -438,10 +503,10 @@ impl Optimizer for Ga {
                     ca[lo..hi].swap_with_slice(&mut cb[lo..hi]);
                 }
                 let bounds = (&self.lower[..], &self.upper[..]);
-                Self::mutate_real(ca, pm, &self.sigma, bounds, ctx.rng());
+                Self::mutate_real(ca, pm, scope, &self.sigma, bounds, ctx.rng());
                 ctx.repair(ca);
                 if second {
-                    Self::mutate_real(cb, pm, &self.sigma, bounds, ctx.rng());
+                    Self::mutate_real(cb, pm, scope, &self.sigma, bounds, ctx.rng());
                     ctx.repair(cb);
                 }
             }
@@ -501,6 +566,26 @@ mod tests {
             let e = bad.checked("planner.params.ga").unwrap_err().to_string();
             assert!(e.starts_with("planner.params.ga."), "{e}");
         }
+    }
+
+    /// The chromosome reading flips exactly one bit of a mutated child and none otherwise.
+    #[test]
+    fn chromosome_scope_flips_one_bit() {
+        let mut rng = Rng::seed_from_u64(5);
+        let mut u = vec![0.0; 3 * 20];
+        for _ in 0..50 {
+            let mut child = vec![0u64; 3];
+            Ga::mutate_bits(&mut child, 1.0, MutationScope::Chromosome, 20, &mut u, &mut rng);
+            assert_eq!(child.iter().map(|w| w.count_ones()).sum::<u32>(), 1);
+            assert!(child.iter().all(|&w| w < 1 << 20));
+            let mut still = vec![0u64; 3];
+            Ga::mutate_bits(&mut still, 0.0, MutationScope::Chromosome, 20, &mut u, &mut rng);
+            assert_eq!(still, vec![0; 3]);
+        }
+        let t = GaParams::from_table(&toml::from_str("mutation_scope = \"chromosome\"").unwrap(), "p").unwrap();
+        assert_eq!(*t.get(), GaParams { mutation_scope: MutationScope::Chromosome, ..GaParams::default() });
+        assert_eq!(GaParams::amfa2015_per_chromosome().mutation_scope, MutationScope::Chromosome);
+        assert_eq!(GaParams::amfa2015_per_bit_small(30).mutation_rate, Some(1.0 / 600.0));
     }
 
     #[test]

@@ -135,4 +135,10 @@ pub trait Optimizer: Send {
     fn init(&mut self, ctx: &mut Context<'_>);
     /// One iteration (generation).
     fn step(&mut self, ctx: &mut Context<'_>);
+    /// The repair operators (an id of [`crate::repair::REPAIRS`]) this optimizer applies to
+    /// every candidate path when the scenario names none (`[encoding] repair`): amfa2015's AMFA
+    /// excludes and contracts as part of its move. `None`: only the encoding's own repair.
+    fn default_repair(&self) -> Option<&'static str> {
+        None
+    }
 }

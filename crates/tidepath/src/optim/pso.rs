@@ -16,7 +16,9 @@
 //! Parameter sets of the papers (docs/papers/wpa2017.md, amfa2015.md and ijs2023.md):
 //! * wpa2017 (Zhang et al. 2017, Table 3): w = 0.7, c1 = c2 = 2, 50 particles, vmax = range;
 //! * amfa2015 (Liu et al. 2015, section 5, after Li et al.): w = 0.729, c1 = c2 = 1.494,
-//!   vmax = range, 40 particles (the defaults);
+//!   40 particles, "V_max = X_max": the top of the range, half the box width on its symmetric
+//!   ranges (`PsoParams::amfa2015`, vmax = range / 2); the other reading, vmax = the whole
+//!   width, is `PsoParams::amfa2015_vmax_range` and the defaults (docs/papers/amfa2015.md A13);
 //! * ijs2023 (Guo et al., baselines): w 0.9 -> 0.4 linearly, c1 = c2 = 2, vmax = 0.2 x range,
 //!   45 particles.
 //!
@@ -40,7 +42,8 @@ use crate::rng::unit_f64;
 use crate::termination::MAX_COUNT;
 
 crate::params! {
-    /// PSO parameters. Defaults: amfa2015's set (see the module documentation).
+    /// PSO parameters. Defaults: amfa2015's set with the velocity clamp at the box width (see
+    /// the module documentation).
     pub struct PsoParams {
         /// Number of particles.
         population: usize = 40, Range::integer(2, MAX_POPULATION as u64), "amfa2015 section 5";
@@ -91,9 +94,16 @@ impl PsoParams {
         }
     }
 
-    /// amfa2015 (Liu et al. 2015, section 5): w = 0.729, c1 = c2 = 1.494, 40 particles,
-    /// vmax = range. The default.
+    /// amfa2015 (Liu et al. 2015, section 5): w = 0.729, c1 = c2 = 1.494, 40 particles, and
+    /// "V_max = X_max" read as the top of the range, which on the paper's symmetric ranges is
+    /// half the box width (docs/papers/amfa2015.md A13). What `reproduce amfa2015` runs as `pso`.
     pub fn amfa2015() -> Self {
+        Self { vmax_fraction: 0.5, ..Self::amfa2015_vmax_range() }
+    }
+
+    /// amfa2015's setting with the other reading of "V_max = X_max": the whole box width. The
+    /// defaults.
+    pub fn amfa2015_vmax_range() -> Self {
         Self {
             population: 40,
             w_start: 0.729,
@@ -274,7 +284,8 @@ mod tests {
     #[test]
     fn defaults_and_presets() {
         let p = PsoParams::default();
-        assert_eq!(p, PsoParams::amfa2015());
+        assert_eq!(p, PsoParams::amfa2015_vmax_range());
+        assert_eq!(PsoParams::amfa2015(), PsoParams { vmax_fraction: 0.5, ..p.clone() });
         assert_eq!(
             (p.population, p.w_start, p.w_end, p.c1, p.c2, p.vmax_fraction),
             (40, 0.729, 0.729, 1.494, 1.494, 1.0)
@@ -316,7 +327,7 @@ mod tests {
         assert!(PsoParams::from_table(&t, "p").is_err());
         let back = PsoParams::from_table(&PsoParams::ijs2023(7).to_table(), "p").unwrap();
         assert_eq!(*back.get(), PsoParams::ijs2023(7));
-        assert_eq!(PsoParams::default(), PsoParams::amfa2015());
+        assert_eq!(PsoParams::default(), PsoParams::amfa2015_vmax_range());
     }
 
     #[test]
