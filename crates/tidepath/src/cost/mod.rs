@@ -1,10 +1,12 @@
 //! Cost models: each a sum of named terms, one file per paper, chosen by name in a scenario
 //! (`[cost] model = "..."`). `eval` prints the terms, so a user sees why a path costs what it does.
 
+pub mod amfa2015;
 pub mod general;
 pub mod lfhh2019;
 pub mod wpa2017;
 
+pub use amfa2015::{Amfa2015Cost, Amfa2015Params};
 pub use general::{GeneralCost, GeneralWeights};
 pub use lfhh2019::{Lfhh2019Cost, Lfhh2019Params};
 pub use wpa2017::{Wpa2017Cost, Wpa2017Weights};
@@ -40,6 +42,13 @@ pub const COST_MODELS: &[Entry<BuildCost>] = &[
         citation: "lfhh2019",
         params: Lfhh2019Params::SPECS,
         build: lfhh2019::build,
+    },
+    Entry {
+        id: "amfa2015",
+        description: "weighted length plus C times the route and evaluation points inside obstacles or the seabed (eqs. 6-8)",
+        citation: "amfa2015",
+        params: Amfa2015Params::SPECS,
+        build: amfa2015::build,
     },
 ];
 
