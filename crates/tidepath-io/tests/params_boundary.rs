@@ -1,5 +1,5 @@
 //! The generic parameter test: every parameter of every component (planners, smoothers, cost
-//! models, encodings; the toys of this crate's tests included) is built at each bound of its
+//! models, encodings, repairs; the toys of this crate's tests included) is built at each bound of its
 //! one declaration and just beyond it. A bound is accepted; just beyond is refused with one line
 //! naming the field (`planner.params.de.f: must be in (0, 2], got 3`). No list of ids here:
 //! the registries are read.
@@ -89,6 +89,11 @@ fn every_parameter_of_every_component_holds_its_bounds() {
             }
         };
         checked += check("encoding", e, "encoding", &build);
+    }
+    for e in tidepath::repair::REPAIRS {
+        let build =
+            |t: &toml::Table| tidepath::repair::build_repair(e.id, Some(t)).map(|_| ()).map_err(|e| e.to_string());
+        checked += check("repair", e, &format!("encoding.repair_params.{}", e.id), &build);
     }
     assert!(checked > 60, "only {checked} boundary values tried");
     // The toys are in: the generic check covered components registered by a test.

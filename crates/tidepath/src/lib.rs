@@ -24,6 +24,7 @@ pub mod path;
 pub mod planner;
 pub mod raster;
 pub mod registry;
+pub mod repair;
 pub mod rng;
 pub mod scratch;
 pub mod simulate;

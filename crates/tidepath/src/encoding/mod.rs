@@ -58,11 +58,25 @@ pub struct EncodingSpec {
     /// The sliced encoding's main axis: "path" (default), "x" or "y".
     #[serde(skip_serializing_if = "SliceAxis::is_path")]
     pub axis: SliceAxis,
+    /// The repair applied to every candidate path inside the search (an id of
+    /// [`crate::repair::REPAIRS`], or "none"); absent: the optimizer's own
+    /// ([`crate::optim::Optimizer::default_repair`]: amfa2015's AMFA excludes and contracts).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub repair: Option<String>,
+    /// Each repair's parameters, `[encoding.repair_params.ID]`.
+    #[serde(skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub repair_params: std::collections::BTreeMap<String, toml::Table>,
 }
 
 impl Default for EncodingSpec {
     fn default() -> Self {
-        Self { kind: "sliced".into(), waypoints: 20, axis: SliceAxis::Path }
+        Self {
+            kind: "sliced".into(),
+            waypoints: 20,
+            axis: SliceAxis::Path,
+            repair: None,
+            repair_params: std::collections::BTreeMap::new(),
+        }
     }
 }
 
@@ -83,6 +97,32 @@ impl EncodingSpec {
     /// The spec with its waypoint count checked (`encoding.waypoints` in errors).
     pub fn checked(&self) -> Result<Checked<EncodingParams>> {
         EncodingParams { waypoints: self.waypoints }.checked("encoding")
+    }
+
+    /// The repair to apply inside the search: `[encoding] repair` ("none": none), else
+    /// `default` (the optimizer's), built with its `[encoding.repair_params.ID]` table. Every
+    /// table under `repair_params` is checked, used or not, so a typo fails before planning.
+    pub fn build_repair(&self, default: Option<&str>) -> Result<Option<Box<dyn crate::repair::Repair>>> {
+        for (id, table) in &self.repair_params {
+            let registry = crate::repair::registry();
+            if registry.find(id).is_none() {
+                let known = registry.ids().collect::<Vec<_>>().join(", ");
+                return Err(crate::error::Error::input(
+                    format!("encoding.repair_params.{id}"),
+                    format!("unknown repair '{id}' (known: {known})"),
+                ));
+            }
+            crate::repair::build_repair(id, Some(table))?;
+        }
+        let id = match self.repair.as_deref() {
+            Some("none") => return Ok(None),
+            Some(id) => id,
+            None => match default {
+                Some(id) => id,
+                None => return Ok(None),
+            },
+        };
+        crate::repair::build_repair(id, self.repair_params.get(id)).map(Some)
     }
 }
 

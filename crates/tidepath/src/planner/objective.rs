@@ -28,6 +28,9 @@ pub struct PathObjective<'a> {
     groups: Vec<(usize, usize, std::ops::Range<usize>)>,
     /// Each group's free cells, built on first use ([`super::section_cells`]).
     cells: Vec<std::sync::OnceLock<SectionCells>>,
+    /// The repair applied to every mission's path in [`Objective::repair`] (`[encoding]
+    /// repair`), after the encoding's own.
+    path_repair: Option<Box<dyn crate::repair::Repair>>,
 }
 
 impl<'a> PathObjective<'a> {
@@ -61,7 +64,14 @@ impl<'a> PathObjective<'a> {
             }
         }
         let cells = groups.iter().map(|_| std::sync::OnceLock::new()).collect();
-        Self { problem, models, encodings, offsets, speed_genes, lower, upper, groups, cells }
+        Self { problem, models, encodings, offsets, speed_genes, lower, upper, groups, cells, path_repair: None }
+    }
+
+    /// The objective applying `repair` to every mission's decoded path in
+    /// [`Objective::repair`] (`None`: only the encoding's repair and the speed clamp).
+    pub fn with_repair(mut self, repair: Option<Box<dyn crate::repair::Repair>>) -> Self {
+        self.path_repair = repair;
+        self
     }
 
     /// Mission i's encoding variables and its segment speeds (empty without a range).
@@ -235,6 +245,23 @@ impl Objective for PathObjective<'_> {
                 *v = v.clamp(*l, *h);
             }
         }
+        let Some(repair) = &self.path_repair else { return };
+        // The path repair: each mission's path decoded, repaired (at its segment speeds) and
+        // its interior waypoints written back through the encoding, which then repairs again.
+        let mut points = Vec::new();
+        for (i, e) in self.encodings.iter().enumerate() {
+            {
+                let (genes, speeds) = self.split(x, i);
+                e.decode_into(genes, &mut points);
+                repair.apply(&self.model(i, speeds), &mut points);
+            }
+            let genes = &mut x[self.offsets[i]..self.offsets[i] + e.dim()];
+            let interior = points.len().saturating_sub(2);
+            for k in 0..interior.min(e.dim().checked_div(e.waypoint_dim()).unwrap_or(0)) {
+                e.set_waypoint(genes, k, points[k + 1]);
+            }
+            e.repair(genes);
+        }
     }
 
     fn parallel_hint(&self) -> bool {
@@ -303,6 +330,49 @@ mod tests {
             let xs: Vec<f64> = enc.decode(&x).iter().map(|p| p.x).collect();
             assert_eq!(xs, vec![0.0, 1000.0, 2000.0, 3000.0, 4000.0]);
         });
+    }
+
+    /// With the free encoding and `exclude-contract`, a repaired vector has no route point in
+    /// the sphere (nor within the safety distance of it or the seabed), whatever it was.
+    #[test]
+    fn exclude_contract_repair_leaves_no_point_inside() {
+        use crate::encoding::FreeWaypoints;
+        use rand::Rng as _;
+        let w = world();
+        let v =
+            Vehicle { depth_max: 1000.0, safety_distance: 5.0, max_turn: std::f64::consts::PI, ..Vehicle::default() };
+        let (s, g) = (Vec3::new(0.0, 1000.0, -500.0), Vec3::new(4000.0, 600.0, -500.0));
+        let missions = [Mission::new("m", v, s, g, 0.0)];
+        let settings = ModelSettings::default();
+        let cost = GeneralCost::new(GeneralWeights::default().checked("w").unwrap());
+        let problem = Problem {
+            world: &w,
+            settings: &settings,
+            cost: &cost,
+            missions: &missions,
+            fleet: &crate::fleet::NO_FLEET,
+        };
+        let enc = FreeWaypoints::new(s, g, 12, &w.bounds, problem.z_range(0)).unwrap();
+        let repair = crate::repair::build_repair("exclude-contract", None).unwrap();
+        let objective = PathObjective::new(&problem, vec![Box::new(enc)]).with_repair(Some(repair));
+        let model = problem.path_model(0);
+        let mut rng = crate::rng::run_rng(3, 0);
+        let mut inside_before = 0;
+        for _ in 0..100 {
+            let mut x: Vec<f64> = (0..objective.dim())
+                .map(|j| objective.lower()[j] + rng.random::<f64>() * (objective.upper()[j] - objective.lower()[j]))
+                .collect();
+            let before = objective.decode(&x).remove(0);
+            inside_before += before.iter().filter(|p| model.validator.state(**p, 0.0).is_err()).count();
+            objective.repair(&mut x);
+            let after = objective.decode(&x).remove(0);
+            assert_eq!((after[0], *after.last().unwrap()), (s, g));
+            for p in &after[1..after.len() - 1] {
+                assert!(model.validator.state(*p, 0.0).is_ok(), "{p} still invalid: {after:?}");
+                assert!(!w.obstacles[0].contains(*p, 0.0, 0.0));
+            }
+        }
+        assert!(inside_before > 0, "no random point started inside: the test tests nothing");
     }
 
     /// The sphere fills the middle of plane x = 2000: a rectangle inside it has no free cell, one

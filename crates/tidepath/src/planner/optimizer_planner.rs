@@ -78,6 +78,7 @@ impl Planner for OptimizerPlanner {
     }
 
     fn check(&self, problem: &Problem<'_>) -> Result<()> {
+        self.encoding.build_repair(self.optimizer.default_repair())?;
         let dim: usize = self.encodings(problem)?.iter().map(|e| e.dim()).sum();
         optim::check_memory(self.optimizer.population(), dim)
     }
@@ -101,7 +102,9 @@ impl Planner for OptimizerPlanner {
                 graphs: Vec::new(),
             };
         };
-        let objective = PathObjective::new(problem, encodings);
+        // Checked with the planner (`check`); a failure here yields no path repair.
+        let repair = self.encoding.build_repair(self.optimizer.default_repair()).ok().flatten();
+        let objective = PathObjective::new(problem, encodings).with_repair(repair);
         let seeds: Vec<Vec<f64>> = options.init.and_then(|p| objective.encode(p)).into_iter().collect();
         let r = optim::run(self.optimizer.as_mut(), &objective, termination, rng, options.parallel, &seeds, observer);
         let segments = (self.encoding.waypoints as u64 + 1) * problem.missions.len() as u64;

@@ -3,6 +3,7 @@
 //! midpoint insertion for ijs2023, excluding and contracting for amfa2015) join this folder.
 
 pub mod dubins;
+pub mod repair_smoother;
 pub mod shortcut;
 
 pub use shortcut::Shortcut;
@@ -48,6 +49,27 @@ pub const SMOOTHERS: &[Entry<BuildSmoother>] = &[
         citation: "Dubins 1957; Owen, Beard & McLain 2014; as in wpa2017",
         params: dubins::DubinsParams::SPECS,
         build: |t, prefix| Ok(Box::new(dubins::DubinsSmoother::new(dubins::DubinsParams::from_table(t, prefix)?))),
+    },
+    Entry {
+        id: "exclude",
+        description: "amfa2015's excluding operator once: route points inside an obstacle or the seabed pushed out along the surface normal (kept if no costlier)",
+        citation: "amfa2015 section 4.3.1, eq. 9 (read as A9)",
+        params: crate::repair::ExcludeParams::SPECS,
+        build: |t, prefix| repair_smoother::RepairSmoother::build("exclude", t, prefix),
+    },
+    Entry {
+        id: "contract",
+        description: "amfa2015's contracting operator once: each route point pulled toward its neighbours' midpoint (kept if no costlier)",
+        citation: "amfa2015 section 4.3.2, eq. 10 (read as A10)",
+        params: crate::repair::ContractParams::SPECS,
+        build: |t, prefix| repair_smoother::RepairSmoother::build("contract", t, prefix),
+    },
+    Entry {
+        id: "exclude-contract",
+        description: "amfa2015's excluding then contracting operators once (kept if no costlier)",
+        citation: "amfa2015 section 4.3 (order: A14)",
+        params: crate::repair::ExcludeContractParams::SPECS,
+        build: |t, prefix| repair_smoother::RepairSmoother::build("exclude-contract", t, prefix),
     },
 ];
 
