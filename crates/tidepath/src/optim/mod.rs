@@ -9,9 +9,11 @@
 //! is a pure function of the vector, so results are bit-identical for any rayon thread count.
 
 pub mod ade;
+pub mod amfa;
 pub mod context;
 pub mod de;
 pub mod eda_g;
+pub mod fa;
 pub mod functions;
 pub mod ga;
 pub mod histogram;

@@ -6,7 +6,9 @@
 
 use crate::error::Result;
 use crate::optim::ade::AdeParams;
+use crate::optim::amfa::AmfaParams;
 use crate::optim::eda_g::EdaGParams;
+use crate::optim::fa::FaParams;
 use crate::optim::ga::GaParams;
 use crate::optim::histogram::{FhhLtsParams, FhhParams, LfhhParams};
 use crate::optim::mwpa::MwpaParams;
@@ -28,7 +30,7 @@ pub const PRESETS: &[Entry<PresetFor>] = &[
     },
     Entry {
         id: "amfa2015",
-        description: "amfa2015's baseline setting (Tables 1-4): pso, ga",
+        description: "amfa2015's setting (section 5, Tables 1-4): amfa, fa, pso, ga",
         citation: "Liu et al. 2015 (amfa2015), section 5",
         params: &[],
         build: amfa2015,
@@ -54,6 +56,8 @@ fn wpa2017(planner: &str) -> Option<toml::Table> {
 
 fn amfa2015(planner: &str) -> Option<toml::Table> {
     Some(match planner {
+        "amfa" => AmfaParams::amfa2015().to_table(),
+        "fa" => FaParams::amfa2015().to_table(),
         "pso" => PsoParams::amfa2015().to_table(),
         "ga" => GaParams::amfa2015().to_table(),
         _ => return None,

@@ -10,8 +10,10 @@ use super::{OptimizerPlanner, Planner};
 use crate::encoding::EncodingSpec;
 use crate::error::{Error, Result};
 use crate::optim::ade::{Ade, AdeParams};
+use crate::optim::amfa::{Amfa, AmfaParams};
 use crate::optim::de::{De, DeParams};
 use crate::optim::eda_g::{EdaG, EdaGParams};
+use crate::optim::fa::{Fa, FaParams};
 use crate::optim::ga::{Ga, GaParams};
 use crate::optim::histogram::{FhhLtsParams, FhhParams, Histogram, LfhhParams};
 use crate::optim::mwpa::{Mwpa, MwpaParams};
@@ -122,6 +124,20 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
         citation: "wpa2017 (Zhang et al. 2017)",
         params: MwpaParams::SPECS,
         build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Mwpa::new(MwpaParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "fa",
+        description: "firefly algorithm: each firefly moves toward every brighter one, attraction decaying with distance, a uniform random step",
+        citation: "Yang 2009; baseline in amfa2015",
+        params: FaParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Fa::new(FaParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "amfa",
+        description: "modified firefly algorithm: random step scaled by the distance, absorption and randomness scheduled over the run, moves kept only when they help (AFS); excludes and contracts paths",
+        citation: "amfa2015 (Liu et al. 2015)",
+        params: AmfaParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Amfa::new(AmfaParams::from_table(t, p)?)))),
     },
     Entry {
         id: "lfhh",
