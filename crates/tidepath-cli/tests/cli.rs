@@ -28,6 +28,8 @@ mod hardening;
 mod no_route;
 #[path = "cli/numbers.rs"]
 mod numbers;
+#[path = "cli/repair.rs"]
+mod repair;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

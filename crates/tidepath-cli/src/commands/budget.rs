@@ -64,22 +64,59 @@ impl SmoothArgs {
     }
 }
 
+/// `--repair`, shared by `plan` and `compare`: the repair optimizer planners apply to every
+/// candidate path inside their search.
+#[derive(Args)]
+pub struct RepairArgs {
+    /// Repair every candidate path inside optimizer planners' search (overrides the
+    /// scenario's `[encoding] repair`): a repair id with optional parameters,
+    /// `ID[:KEY=VALUE,...]` (e.g. `exclude-contract:margin=5`), or `none`. Default: the
+    /// optimizer's own (AMFA: `exclude-contract`), else none. See `tidepath planners`.
+    #[arg(long)]
+    pub repair: Option<String>,
+}
+
+impl RepairArgs {
+    /// Writes `--repair` into the scenario's `[encoding]`, after checking the id and its
+    /// parameters (a bad id names `--repair`, a bad parameter its `encoding.repair_params`
+    /// field).
+    pub fn apply(&self, encoding: &mut tidepath::encoding::EncodingSpec) -> Result<(), tidepath::Error> {
+        let Some(text) = self.repair.as_deref() else { return Ok(()) };
+        let (id, params) = parse_id_params(text, "--repair", "--repair exclude-contract:margin=5")?;
+        if id == "none" {
+            if params.is_some() {
+                return Err(tidepath::Error::input("--repair", "`none` takes no parameters"));
+            }
+        } else {
+            tidepath::repair::registry().get(&id).map_err(|e| e.for_field("--repair"))?;
+            tidepath::repair::build_repair(&id, params.as_ref())?;
+        }
+        if let Some(t) = params {
+            encoding.repair_params.insert(id.clone(), t);
+        }
+        encoding.repair = Some(id);
+        Ok(())
+    }
+}
+
 /// Parses `--smooth ID[:KEY=VALUE,...]` into the smoother id and its parameter table (values
 /// as TOML would read them: `passes=3`, `radius=25.5`, `mode="fast"`).
 pub fn parse_smooth(text: &str) -> Result<(String, Option<toml::Table>), tidepath::Error> {
+    parse_id_params(text, "--smooth", "--smooth shortcut:passes=3")
+}
+
+/// Parses `ID[:KEY=VALUE,...]` given to `flag` (errors name it and show `example`).
+fn parse_id_params(text: &str, flag: &str, example: &str) -> Result<(String, Option<toml::Table>), tidepath::Error> {
     let Some((id, rest)) = text.split_once(':') else {
         return Ok((text.to_string(), None));
     };
     let mut table = toml::Table::new();
     for pair in rest.split(',').filter(|p| !p.trim().is_empty()) {
-        let (k, v) = pair.split_once('=').ok_or_else(|| {
-            tidepath::Error::input("--smooth", format!("`{pair}` is not KEY=VALUE (e.g. --smooth shortcut:passes=3)"))
-        })?;
+        let (k, v) = pair
+            .split_once('=')
+            .ok_or_else(|| tidepath::Error::input(flag, format!("`{pair}` is not KEY=VALUE (e.g. {example})")))?;
         let parsed: toml::Table = toml::from_str(&format!("v = {}", v.trim())).map_err(|_| {
-            tidepath::Error::input(
-                "--smooth",
-                format!("`{}` is not a value (a number, true/false or \"text\")", v.trim()),
-            )
+            tidepath::Error::input(flag, format!("`{}` is not a value (a number, true/false or \"text\")", v.trim()))
         })?;
         table.insert(k.trim().to_string(), parsed["v"].clone());
     }

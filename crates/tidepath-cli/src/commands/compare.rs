@@ -25,6 +25,8 @@ pub struct CompareArgs {
     pub run: super::budget::BudgetArgs,
     #[command(flatten)]
     pub smoothing: super::budget::SmoothArgs,
+    #[command(flatten)]
+    pub repairing: super::budget::RepairArgs,
     /// Wall-time limit per run in seconds (a safety net: runs it stops depend on the machine).
     #[arg(long)]
     pub time_limit: Option<f64>,
@@ -41,7 +43,8 @@ pub struct CompareArgs {
 }
 
 pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
-    let scenario = scenario::load(&args.scenario)?;
+    let mut scenario = scenario::load(&args.scenario)?;
+    args.repairing.apply(&mut scenario.encoding)?;
     let jobs = crate::jobs(args.run.jobs)?;
     tidepath_experiments::compare::check_runs(args.runs)?;
     let mut budget = args.run.budget(args.time_limit);

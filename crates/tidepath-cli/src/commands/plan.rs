@@ -27,6 +27,8 @@ pub struct PlanArgs {
     pub time_limit: Option<f64>,
     #[command(flatten)]
     pub smoothing: super::budget::SmoothArgs,
+    #[command(flatten)]
+    pub repairing: super::budget::RepairArgs,
     /// Start from this plan JSON (a warm start): optimizers seed part of their population with
     /// its paths.
     #[arg(long)]
@@ -86,6 +88,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     for w in &scenario.warnings {
         eprintln!("warning: {w}");
     }
+    args.repairing.apply(&mut scenario.encoding)?;
     if args.run.jobs.is_some() {
         // Only the first pool configuration counts; a fresh process has none yet.
         let _ = rayon::ThreadPoolBuilder::new().num_threads(crate::jobs(args.run.jobs)?).build_global();

@@ -66,6 +66,11 @@ pub fn list(args: &PlannersArgs) -> Result<Outcome, Error> {
         &tidepath::smoothing::registry(),
         args.params,
     );
+    section(
+        "Repairs inside the search (plan --repair ID[:KEY=VALUE,...], or [encoding] repair = \"ID\" with [encoding.repair_params.ID]; \"none\": off)",
+        &tidepath::repair::registry(),
+        args.params,
+    );
     if !args.params {
         println!("`tidepath planners --params` lists every parameter with its range and default.");
     }

@@ -128,6 +128,8 @@ impl Scenario {
         }
         scenario.cost_model()?;
         scenario.build_encoding()?;
+        // `[encoding] repair` and every `[encoding.repair_params.ID]`, whichever planner runs.
+        scenario.encoding.build_repair(None)?;
         let planner = &scenario.planner;
         let registry = tidepath::planner::registry();
         // The scenario's population applies to planners that have one.
