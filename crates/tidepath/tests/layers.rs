@@ -40,6 +40,7 @@ const ORDER: &[&str] = &[
     "path",
     "fleet",
     "cost",
+    "repair",
     "encoding",
     "termination",
     "optim",
