@@ -292,7 +292,7 @@ fn run_counts_at_the_edge_of_the_integers_are_refused() {
     for runs in ["18446744073709551615", "9223372036854775808", "0", "100001"] {
         for args in [
             &["compare", "demo", "--planners", "pso", "--runs", runs][..],
-            &["reproduce", "baselines", "--runs", runs, "--out", "r"],
+            &["reproduce", "amfa2015", "--only", "tables", "--runs", runs, "--out", "r"],
             &["bench", "functions", "--algos", "pso", "--funcs", "sphere", "--runs", runs],
         ] {
             let r = run(dir.path(), args);
@@ -524,7 +524,7 @@ fn an_output_folder_that_is_a_file_is_refused() {
     );
     refused_leaving_all(
         |d| std::fs::write(d.join("r"), "a file").unwrap(),
-        &["reproduce", "baselines", "--runs", "2", "--out", "r/sub"],
+        &["reproduce", "amfa2015", "--only", "tables", "--runs", "2", "--out", "r/sub"],
         &["--out", "not a folder"],
     );
 }

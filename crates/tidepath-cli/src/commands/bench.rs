@@ -53,8 +53,10 @@ pub struct FunctionsArgs {
     #[arg(long)]
     pub population: Option<usize>,
     /// A paper's parameter set for the optimizers it covers (`wpa2017`: Table 3 for mwpa, wpa,
-    /// pso and ga; `lfhh2019`: Table 1 for lfhh, fhh, fhh-lts, eda-g and ade; `amfa2015`: pso
-    /// and ga); the others keep their defaults. `--population` still overrides it.
+    /// pso and ga; `lfhh2019`: Table 1 for lfhh, fhh, fhh-lts, eda-g and ade; `amfa2015`:
+    /// section 5 for amfa, fa, pso (V_max half the box width) and ga; `amfa2015-vmax-range`: the
+    /// same with PSO's V_max the whole width); the others keep their defaults. `--population`
+    /// still overrides it.
     #[arg(long)]
     pub preset: Option<String>,
     /// Evaluations per run.

@@ -10,7 +10,7 @@ use crate::Outcome;
 
 #[derive(Args)]
 pub struct ReproduceArgs {
-    /// Which paper's experiments to run (`baselines`; `list` shows all).
+    /// Which paper's experiments to run (`wpa2017`, `lfhh2019`, `amfa2015`; `list` shows all).
     pub paper: String,
     /// Runs per planner and problem.
     #[arg(long, default_value_t = 30)]
@@ -32,12 +32,12 @@ pub struct ReproduceArgs {
     /// Output folder for REPORT.md, per-experiment results and figures.
     #[arg(long, default_value = "reproduce")]
     pub out: PathBuf,
-    /// A reduced budget for a quick look (lfhh2019: a fifth of the generations, coarser sweeps);
-    /// the report states the budget it ran.
+    /// A reduced budget for a quick look (lfhh2019: a fifth of the generations, coarser sweeps;
+    /// amfa2015: a fifth of the evaluations on the paths); the report states the budget it ran.
     #[arg(long)]
     pub quick: bool,
     /// Run only these parts of the paper, comma-separated (lfhh2019: table2, table3, ablation,
-    /// sweeps; its full run takes hours); default: all.
+    /// sweeps, its full run takes hours; amfa2015: tables, paths); default: all.
     #[arg(long, value_delimiter = ',')]
     pub only: Vec<String>,
 }

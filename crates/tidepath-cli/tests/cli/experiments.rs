@@ -82,7 +82,7 @@ fn unknown_reference_planners_are_refused_naming_the_flag() {
     let out = dir.path().join("o");
     for args in [
         vec!["compare", "demo", "--planners", "pso", "--reference", "nope", "--out", out.to_str().unwrap()],
-        vec!["reproduce", "baselines", "--reference", "nope", "--out", out.to_str().unwrap()],
+        vec!["reproduce", "amfa2015", "--reference", "nope", "--out", out.to_str().unwrap()],
     ] {
         let o = tidepath(&args);
         assert_eq!(o.status.code(), Some(2));

@@ -73,19 +73,19 @@ fn a_planner_without_a_feasible_run_shows_no_numbers_for_feasible_statistics() {
 fn reproduce_with_two_runs_calls_its_claims_undecidable() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("rep");
-    let o = tidepath(&["reproduce", "baselines", "--runs", "2", "--out", out.to_str().unwrap()]);
+    let o = tidepath(&["reproduce", "amfa2015", "--only", "tables", "--runs", "2", "--out", out.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     let text = stdout(&o);
     assert!(
         text.contains(
-            "Table 2: small ranges: 0 of 6 claims reproduced, 6 undecidable with 2 runs (the paper reports 30 runs)"
+            "Table 2: small ranges: 0 of 12 claims reproduced, 12 undecidable with 2 runs (the paper reports 30 runs)"
         ),
         "{text}"
     );
     let report = std::fs::read_to_string(out.join("REPORT.md")).unwrap();
     for needle in [
         "**Fewer runs than the paper**: 2 runs per planner and problem; the paper reports 30.",
-        "undecidable with 2 runs: 12;",
+        "undecidable with 2 runs: 30;",
         "(30 runs per cell). Ours: 2 runs per cell, fewer than the paper's 30.",
         "## Legend",
         "| f = 0 ours | f < 1e-300 ours |",
@@ -100,7 +100,7 @@ fn reproduce_with_two_runs_calls_its_claims_undecidable() {
     assert!(out.join("table2-small/convergence.svg").is_file());
     assert!(out.join("table4-wide/results.json").is_file());
     assert!(!report.contains("**not reproduced"), "a claim called not reproduced:\n{report}");
-    assert_eq!(report.matches("**undecidable with 2 runs**").count(), 12);
+    assert_eq!(report.matches("**undecidable with 2 runs**").count(), 30);
     // Every "0" count has its denominator: the paper's of 30, ours of 2.
     let griewank = report.lines().find(|l| l.starts_with("| griewank-d30-small | pso |")).unwrap();
     assert!(griewank.contains("| 7/30 | ") && griewank.matches("/2 |").count() == 2, "{griewank}");

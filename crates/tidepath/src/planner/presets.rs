@@ -30,10 +30,18 @@ pub const PRESETS: &[Entry<PresetFor>] = &[
     },
     Entry {
         id: "amfa2015",
-        description: "amfa2015's setting (section 5, Tables 1-4): amfa, fa, pso, ga",
-        citation: "Liu et al. 2015 (amfa2015), section 5",
+        description:
+            "amfa2015's setting (section 5, Tables 1-4): amfa, fa, pso (V_max = X_max: half the box width), ga",
+        citation: "Liu et al. 2015 (amfa2015), section 5 (readings in docs/papers/amfa2015.md A8, A13)",
         params: &[],
         build: amfa2015,
+    },
+    Entry {
+        id: "amfa2015-vmax-range",
+        description: "amfa2015's setting with PSO's V_max read as the whole box width: amfa, fa, pso, ga",
+        citation: "Liu et al. 2015 (amfa2015), section 5 (the other reading of V_max, docs/papers/amfa2015.md A13)",
+        params: &[],
+        build: amfa2015_vmax_range,
     },
     Entry {
         id: "lfhh2019",
@@ -62,6 +70,13 @@ fn amfa2015(planner: &str) -> Option<toml::Table> {
         "ga" => GaParams::amfa2015().to_table(),
         _ => return None,
     })
+}
+
+fn amfa2015_vmax_range(planner: &str) -> Option<toml::Table> {
+    match planner {
+        "pso" => Some(PsoParams::amfa2015_vmax_range().to_table()),
+        other => amfa2015(other),
+    }
 }
 
 /// lfhh2019's Table 1: NP = 200 for all, binNum = S = 100, lambda = 0.08, T = 5, and the
@@ -110,5 +125,12 @@ mod tests {
         assert_eq!(preset_params("wpa2017", "de").unwrap(), None);
         let e = preset_params("nope", "pso").unwrap_err().to_string();
         assert!(e.starts_with("--preset: unknown preset 'nope' (known: wpa2017, amfa2015"), "{e}");
+        // amfa2015's two readings of V_max = X_max differ in PSO's clamp only.
+        let half = preset_params("amfa2015", "pso").unwrap().unwrap();
+        let whole = preset_params("amfa2015-vmax-range", "pso").unwrap().unwrap();
+        assert_eq!((half["vmax_fraction"].as_float(), whole["vmax_fraction"].as_float()), (Some(0.5), Some(1.0)));
+        for p in ["amfa", "fa", "ga", "de"] {
+            assert_eq!(preset_params("amfa2015", p).unwrap(), preset_params("amfa2015-vmax-range", p).unwrap());
+        }
     }
 }
