@@ -55,7 +55,18 @@ fn feasible_plans_of_the_geographic_builtins_clear_the_files_own_seabed() {
     assert!(file.values.iter().all(|v| v.is_finite()), "the shipped file has no fill values");
     let geographic: Vec<&str> =
         builtin_names().filter(|n| builtin(n).unwrap().contains("frame = \"geographic\"")).collect();
-    assert_eq!(geographic, ["salish", "salish-strait", "salish-strait-turns", "salish-forecast", "forecast-update"]);
+    assert_eq!(
+        geographic,
+        [
+            "salish",
+            "salish-strait",
+            "salish-strait-turns",
+            "salish-forecast",
+            "forecast-update",
+            "amfa-salish-1",
+            "amfa-salish-2"
+        ]
+    );
     let mut checked = 0;
     for id in geographic {
         let s = Scenario::from_toml(builtin(id).unwrap(), &format!("builtin:{id}")).unwrap();

@@ -114,6 +114,20 @@ pub const BUILTIN: &[Entry<&str>] = &[
         params: &[],
         build: include_str!("../../scenarios/lfhh-3d-3.toml"),
     },
+    Entry {
+        id: "amfa-salish-1",
+        description: "3-D: amfa2015's experiment 1 on the Salish continental slope, 30 free route points, 300 m -> 300 m deep",
+        citation: "amfa2015, section 5.2 (Fig. 17), mirrored on matplotlib's topobathy sample (the paper's chart is not available)",
+        params: &[],
+        build: include_str!("../../scenarios/amfa-salish-1.toml"),
+    },
+    Entry {
+        id: "amfa-salish-2",
+        description: "3-D: amfa2015's experiment 2 on the Salish continental slope, 30 free route points, 230 m -> 450 m deep",
+        citation: "amfa2015, section 5.2 (Fig. 18), mirrored on matplotlib's topobathy sample (the paper's chart is not available)",
+        params: &[],
+        build: include_str!("../../scenarios/amfa-salish-2.toml"),
+    },
 ];
 
 pub fn registry() -> Registry<&'static str> {
