@@ -41,7 +41,7 @@ fn both_experiments_load_with_the_papers_setting() {
 
 /// A route in the water exists: Theta* finds a feasible one on both, Hybrid on
 /// `amfa-salish-2`. (On `amfa-salish-1` Hybrid's refinement, minimising the amfa2015 cost,
-/// cuts 70 m into the sphere between two evaluation points: the cost samples points, and
+/// cuts into the sphere between two evaluation points: the cost samples points, and
 /// tidepath's exact check says infeasible.)
 #[test]
 fn a_route_in_the_water_exists() {
