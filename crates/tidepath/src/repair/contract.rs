@@ -9,8 +9,11 @@
 //! midpoint; A10 reads it as a pull toward the midpoint. A pull whose new point would be an
 //! invalid state (inside an obstacle or the seabed by the safety distance, out of the domain or
 //! the depth band, where the current has no data; moving obstacles at the vehicle's arrival
-//! there) is undone for that point, which then stays where it was. Only points are judged, not
-//! the segments between them: that is the cost model's job.
+//! there) is undone for that point, which then stays where it was; so is a pull that would make
+//! one of the point's two segments invalid when it was valid before (a chord cutting into a
+//! curved obstacle between two points on its envelope, which amfa2015's point-counted risk
+//! does not see). So contracting never makes a valid segment invalid: a feasible path stays
+//! feasible, at the price of up to four motion checks per point.
 
 use super::{arrival, Repair, RESISTANCE, RESISTANCE_RANGE};
 use crate::geom::Vec3;
@@ -63,7 +66,7 @@ impl Repair for Contract {
             let (prev, p, next) = (points[i - 1], points[i], points[i + 1]);
             let target = p + ((prev + next) * 0.5 - p) * self.k;
             let t = arrival(model, i - 1, prev, target, t_prev);
-            if model.validator.state(target, t).is_ok() {
+            if model.validator.state(target, t).is_ok() && keeps_segments(model, i, [prev, p, next], target, t_prev) {
                 points[i] = target;
                 t_prev = t;
             } else {
@@ -71,4 +74,20 @@ impl Repair for Contract {
             }
         }
     }
+}
+
+/// Whether moving point `i` from `p` to `target` (neighbours `prev` and `next`, leaving `prev`
+/// at `t_prev`) leaves each of its two segments valid that was valid before. The new segments
+/// are judged first; the old ones only when a new one fails.
+fn keeps_segments(model: &PathModel<'_>, i: usize, [prev, p, next]: [Vec3; 3], target: Vec3, t_prev: f64) -> bool {
+    let v = &model.validator;
+    let (v_in, v_out) = (model.segment_speed(i - 1), model.segment_speed(i));
+    let new_in = v.motion_at(prev, target, t_prev, v_in);
+    let new_out = v.motion_at(target, next, new_in.arrival, v_out);
+    if new_in.valid() && new_out.valid() {
+        return true;
+    }
+    let old_in = v.motion_at(prev, p, t_prev, v_in);
+    let old_out = v.motion_at(p, next, old_in.arrival, v_out);
+    (new_in.valid() || !old_in.valid()) && (new_out.valid() || !old_out.valid())
 }

@@ -37,7 +37,7 @@
 
 use super::{arrival, clamp_to_domain, default_margin, Repair, MARGIN_RANGE};
 use crate::geom::{Vec2, Vec3};
-use crate::params::Checked;
+use crate::params::{Checked, Range};
 use crate::path::PathModel;
 use crate::validity::StateIssue;
 use crate::world::{Dims, Shape, Terrain};
@@ -51,22 +51,33 @@ crate::params! {
         /// Exclusion margin δ beyond the safety distance (m); absent: 1 % of the world's
         /// depth range (its z extent), or 0.1 % of its larger horizontal side in a 2-D world.
         margin: Option<f64> = None, MARGIN_RANGE, "amfa2015 eq. 9 (A9: δ chosen)";
+        /// Also move out segments that cut an obstacle's or the seabed's envelope between two
+        /// clear route points (tidepath's addition; the paper excludes points only).
+        segments: bool = true, Range::Flag, "tidepath (docs/papers/amfa2015.md A9)";
     }
 }
 
 /// The excluding operator.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Exclude {
     margin: Option<f64>,
+    segments: bool,
+}
+
+impl Default for Exclude {
+    fn default() -> Self {
+        Self { margin: None, segments: true }
+    }
 }
 
 impl Exclude {
     pub fn new(params: Checked<ExcludeParams>) -> Self {
-        Self::with_margin(params.into_inner().margin)
+        let p = params.into_inner();
+        Self::with_margin(p.margin, p.segments)
     }
 
-    pub(crate) fn with_margin(margin: Option<f64>) -> Self {
-        Self { margin }
+    pub(crate) fn with_margin(margin: Option<f64>, segments: bool) -> Self {
+        Self { margin, segments }
     }
 }
 
@@ -85,6 +96,26 @@ impl Repair for Exclude {
         let slack = if size.is_finite() { 1e-9 * size } else { 0.0 };
         let safety = model.vehicle.safety_distance.max(0.0);
         let reach = safety + margin + slack;
+        // Route points first; then segments that cut an envelope between clear points, and
+        // the points again (a moved segment may put an end point somewhere new), a few rounds.
+        for _ in 0..MAX_SEGMENT_ROUNDS {
+            self.points(model, points, reach, safety + margin);
+            if !self.segments || !super::segments::push_segments(model, points, reach, safety + margin) {
+                return;
+            }
+        }
+        self.points(model, points, reach, safety + margin);
+    }
+}
+
+/// Rounds of the segment pass (each followed by the point pass) per application.
+pub const MAX_SEGMENT_ROUNDS: usize = 3;
+
+impl Exclude {
+    /// The point pass: each interior route point within the safety distance of an obstacle or
+    /// the seabed is pushed to `reach` from it (see the module docs).
+    fn points(&self, model: &PathModel<'_>, points: &mut [Vec3], reach: f64, need: f64) {
+        let n = points.len();
         let planar = model.world.dims == Dims::Two;
         let mut t_prev = model.departure_time;
         for i in 1..n - 1 {
@@ -97,7 +128,7 @@ impl Repair for Exclude {
                 let moved = match issue {
                     StateIssue::OutsideDomain | StateIssue::OutsideDepthBand => p,
                     StateIssue::Seabed { .. } if planar => break,
-                    StateIssue::Seabed { .. } => seabed_push(&model.world.terrain, p, reach, safety + margin),
+                    StateIssue::Seabed { .. } => seabed_push(&model.world.terrain, p, reach, need),
                     StateIssue::Obstacle { index, .. } => {
                         let shape = model.world.obstacles[index].shape_at(t);
                         push_out(&shape, p, reach, planar, hint)

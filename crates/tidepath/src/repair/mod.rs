@@ -20,6 +20,7 @@
 
 pub mod contract;
 pub mod exclude;
+mod segments;
 
 #[cfg(test)]
 mod tests;
@@ -60,6 +61,9 @@ crate::params! {
         /// Exclusion margin δ beyond the safety distance (m); absent: 1 % of the world's
         /// depth range (its z extent), or 0.1 % of its larger horizontal side in a 2-D world.
         margin: Option<f64> = None, MARGIN_RANGE, "amfa2015 eq. 9 (A9: δ chosen)";
+        /// Also move out segments that cut an obstacle's or the seabed's envelope between two
+        /// clear route points (tidepath's addition; the paper excludes points only).
+        segments: bool = true, Range::Flag, "tidepath (docs/papers/amfa2015.md A9)";
         /// Resistance coefficient k of the contraction: the fraction of the way toward the
         /// neighbours' midpoint a point moves.
         k: f64 = RESISTANCE, RESISTANCE_RANGE, "amfa2015 eq. 10 and section 5.2";
@@ -76,7 +80,7 @@ pub struct ExcludeContract {
 impl ExcludeContract {
     pub fn new(params: crate::params::Checked<ExcludeContractParams>) -> Self {
         let p = params.into_inner();
-        Self { exclude: Exclude::with_margin(p.margin), contract: Contract::with_k(p.k) }
+        Self { exclude: Exclude::with_margin(p.margin, p.segments), contract: Contract::with_k(p.k) }
     }
 }
 
@@ -95,7 +99,7 @@ impl Repair for ExcludeContract {
 pub const REPAIRS: &[Entry<BuildRepair>] = &[
     Entry {
         id: "exclude",
-        description: "move route points inside an obstacle or the seabed out along the surface normal, onto the safety envelope plus a margin",
+        description: "move route points inside an obstacle or the seabed out along the surface normal, onto the safety envelope plus a margin; then segments cutting an envelope between clear points",
         citation: "amfa2015 section 4.3.1, eq. 9 (read as A9)",
         params: ExcludeParams::SPECS,
         build: |t, prefix| Ok(Box::new(Exclude::new(ExcludeParams::from_table(t, prefix)?))),

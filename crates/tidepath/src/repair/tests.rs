@@ -35,7 +35,8 @@ fn run(world: &World, repair: &dyn Repair, path: &[Vec3]) -> Vec<Vec3> {
 }
 
 fn exclude() -> Exclude {
-    Exclude::with_margin(Some(MARGIN))
+    // The point pass alone: the hand-computed pushes below are of single points.
+    Exclude::with_margin(Some(MARGIN), false)
 }
 
 fn assert_close(a: Vec3, b: Vec3) {
@@ -154,6 +155,64 @@ fn sloped_seabed_pushes_along_its_normal() {
     assert!((out[1].z - h - REACH).abs() < TOL);
 }
 
+/// Every segment of `path` clear of the seabed and obstacles in `w` (start at t = 0).
+fn all_segments_valid(w: &World, path: &[Vec3]) -> bool {
+    let mission = Mission::new("m", vehicle(), path[0], *path.last().unwrap(), 0.0);
+    let settings = ModelSettings::default();
+    let model = PathModel::new(w, &mission, &settings);
+    // Motions only (the seabed and obstacles): pitch and turn limits are not the operator's.
+    let mut t = 0.0;
+    path.windows(2).all(|w| {
+        let m = model.validator.motion(w[0], w[1], t);
+        t = m.arrival;
+        m.valid()
+    })
+}
+
+/// Two clear route points whose chord cuts a sphere, a cylinder or a ridge of the seabed: the
+/// segment pass moves the chord out, so every segment ends valid; the start and goal stay.
+#[test]
+fn chords_through_an_envelope_are_pushed_out() {
+    let shapes = [
+        Shape::Sphere { center: Vec3::new(50.0, 50.0, -50.0), radius: 10.0 },
+        Shape::Cylinder { center: Vec2::new(50.0, 50.0), radius: 10.0, z_min: f64::NEG_INFINITY, z_max: f64::INFINITY },
+        Shape::Box { min: Vec3::new(45.0, 45.0, -60.0), max: Vec3::new(55.0, 55.0, -40.0) },
+    ];
+    let path = [
+        Vec3::new(5.0, 40.0, -50.0),
+        Vec3::new(30.0, 40.0, -50.0),
+        Vec3::new(70.0, 40.0, -50.0),
+        Vec3::new(95.0, 40.0, -50.0),
+    ];
+    for shape in shapes {
+        let mut w = world3();
+        // At y = 48 the chord from x = 30 to 70 crosses all three shapes; its ends are clear.
+        let p: Vec<Vec3> = path.iter().map(|q| Vec3::new(q.x, 48.0, q.z)).collect();
+        w.obstacles.push(Obstacle::fixed(shape.clone()));
+        assert!(!all_segments_valid(&w, &p), "{shape:?}: the set-up must cut the shape");
+        let out = run(&w, &Exclude::with_margin(Some(MARGIN), true), &p);
+        assert_eq!((out[0], out[3]), (p[0], p[3]), "{shape:?}");
+        assert!(all_segments_valid(&w, &out), "{shape:?}: {out:?}");
+    }
+    // A seabed ridge h = -40 at x = 50 falling to -90 at x = 25 and 75 (a tent of two planes
+    // on a grid): the chord at z = -50 from x = 30 to 70 cuts it, both ends clear.
+    let g = RegularGrid2::new(0.0, 0.0, 25.0, 50.0, 5, 3, "g").unwrap();
+    let row = [-90.0, -90.0, -40.0, -90.0, -90.0];
+    let z: Vec<f64> = (0..3).flat_map(|_| row).collect();
+    let mut w = world3();
+    w.terrain = Terrain::Grid(ElevationGrid::new(g, z, "g").unwrap());
+    let p = [
+        Vec3::new(5.0, 50.0, -70.0),
+        Vec3::new(30.0, 50.0, -50.0),
+        Vec3::new(70.0, 50.0, -50.0),
+        Vec3::new(95.0, 50.0, -70.0),
+    ];
+    assert!(!all_segments_valid(&w, &p));
+    let out = run(&w, &Exclude::with_margin(Some(MARGIN), true), &p);
+    assert!(all_segments_valid(&w, &out), "{out:?}");
+    assert_eq!((out[0], out[3]), (p[0], p[3]));
+}
+
 #[test]
 fn outside_points_and_endpoints_are_untouched() {
     let mut w = world3();
@@ -195,7 +254,7 @@ fn default_margin_is_one_percent_of_the_depth_range() {
     let mut w = world3();
     w.obstacles.push(Obstacle::fixed(Shape::Sphere { center: Vec3::new(50.0, 50.0, -50.0), radius: 10.0 }));
     let path = [Vec3::new(5.0, 5.0, -50.0), Vec3::new(52.0, 50.0, -50.0), Vec3::new(95.0, 5.0, -50.0)];
-    let out = run(&w, &Exclude::default(), &path);
+    let out = run(&w, &Exclude::with_margin(None, false), &path);
     // Depth range 100 m: margin 1 m.
     assert_close(out[1], Vec3::new(50.0 + 10.0 + SAFETY + 1.0, 50.0, -50.0));
 }
@@ -259,6 +318,28 @@ fn contracting_never_moves_a_point_into_an_obstacle() {
     w.terrain = Terrain::Peaks(GaussianPeaks { base: -60.0, peaks: vec![], ceiling: None });
     let path = [Vec3::new(0.0, 0.0, -58.0), Vec3::new(50.0, 0.0, -40.0), Vec3::new(100.0, 0.0, -100.0)];
     assert_eq!(run(&w, &Contract::default(), &path)[1], path[1]);
+}
+
+/// The pulled point's new place (50, 1.79) is free, but the chord from the first neighbour to
+/// it passes (25, 0.89), 2.1 m from a sphere's centre at (25, 3), inside its radius 1.5 plus the
+/// 1 m safety distance; the old chords pass 13 m and more from it. The pull is undone; without
+/// the sphere it is made.
+#[test]
+fn contracting_never_makes_a_valid_segment_cut_an_obstacle() {
+    let path = [Vec3::new(0.0, 0.0, -50.0), Vec3::new(50.0, 40.0, -50.0), Vec3::new(100.0, 0.0, -50.0)];
+    let target = Vec3::new(50.0, 40.0 * (1.0 - RESISTANCE), -50.0);
+    let mut w = world3();
+    w.obstacles.push(Obstacle::fixed(Shape::Sphere { center: Vec3::new(25.0, 3.0, -50.0), radius: 1.5 }));
+    let mission = Mission::new("m", vehicle(), path[0], path[2], 0.0);
+    let settings = ModelSettings::default();
+    let model = PathModel::new(&w, &mission, &settings);
+    // The set-up: every point valid, the old segments valid, the new first segment not.
+    assert!(model.validator.state(target, 0.0).is_ok());
+    assert!(model.validator.motion(path[0], path[1], 0.0).valid());
+    assert!(model.validator.motion(path[1], path[2], 0.0).valid());
+    assert!(!model.validator.motion(path[0], target, 0.0).valid());
+    assert_eq!(run(&w, &Contract::default(), &path), path);
+    assert_close(run(&world3(), &Contract::default(), &path)[1], target);
 }
 
 #[test]
