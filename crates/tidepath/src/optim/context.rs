@@ -24,6 +24,8 @@ pub struct Context<'a> {
     best_f: f64,
     scratch: Scratch,
     parallel: bool,
+    /// The objective's [`Objective::parallel_hint`]: its evaluation and repair are costly.
+    parallel_hint: bool,
     /// The run's termination: its stop flag and deadline are polled between chunks of a
     /// population's evaluation and by [`Context::should_stop`].
     termination: Option<&'a Termination>,
@@ -75,6 +77,7 @@ impl<'a> Context<'a> {
             best_f: f64::INFINITY,
             scratch: Scratch::default(),
             parallel: parallel && objective.parallel_hint(),
+            parallel_hint: objective.parallel_hint(),
             termination: None,
             interrupted: false,
             done: Vec::new(),
@@ -135,7 +138,18 @@ impl<'a> Context<'a> {
         &self.seeds
     }
 
+    /// The objective's repair of `x`. A costly objective's repair (a path's: its encoding and
+    /// any repair operators, which judge points and segments against the world) is skipped for
+    /// the plain box clamp once the run is interrupted, so loops that repair a whole population
+    /// (an initial swarm of thousands) end with the run's clock; nothing repaired after that is
+    /// evaluated.
     pub fn repair(&self, x: &mut [f64]) {
+        if self.parallel_hint && (self.interrupted || self.termination.is_some_and(|t| t.interrupted().is_some())) {
+            for ((v, &lo), &hi) in x.iter_mut().zip(&self.lower).zip(&self.upper) {
+                *v = super::clamp(*v, lo, hi);
+            }
+            return;
+        }
         self.objective.repair(x)
     }
 
@@ -163,7 +177,9 @@ impl<'a> Context<'a> {
     /// Evaluates one point. Past the evaluation budget, or once the run is interrupted,
     /// returns +inf without counting.
     pub fn evaluate(&mut self, x: &[f64]) -> f64 {
-        if self.exhausted() || self.interrupted {
+        // A costly objective (microseconds and up) polls the clock and the stop flag before
+        // every point, so optimizers that evaluate one point at a time stop in time.
+        if self.exhausted() || self.interrupted || (self.parallel_hint && self.should_stop()) {
             return f64::INFINITY;
         }
         let f = self.objective.evaluate(x, &mut self.scratch);
