@@ -16,7 +16,9 @@
 //! [`super::amfa`]).
 //!
 //! Readings (docs/papers/amfa2015.md, A2 for the random vector):
-//! * **The random term is in absolute units** (`alpha_scale = "absolute"`, the default):
+//! * **The random term is in absolute units** (`alpha_scale = "absolute"`, the amfa2015 preset
+//!   [`FaParams::amfa2015`] that `reproduce amfa2015` runs; the defaults use `"range"`, below,
+//!   because a step of ±0.5 in a path's metres would never leave its first waypoints):
 //!   α (rand − 0.5) with no factor for the box width. amfa2015 says so when it motivates AMFA
 //!   (section 3): "the random movement step is 1 and the changing range of the random part is
 //!   −0.5 to 0.5, the convergence speed is very slow in solving problems with a large range",
@@ -95,7 +97,7 @@ crate::params! {
         alpha: f64 = 1.0, Range::Number { lo: Bound::Closed(0.0), hi: Bound::Unbounded }, "amfa2015 section 5";
         /// Whether α (rand − 0.5) is in absolute units ("absolute") or multiplied by each
         /// dimension's box width ("range", Yang's code).
-        alpha_scale: AlphaScale = AlphaScale::Absolute, Range::Choice(&["absolute", "range"]), "amfa2015 section 3 (see the module documentation)";
+        alpha_scale: AlphaScale = AlphaScale::Range, Range::Choice(&["absolute", "range"]), "Yang's FA code; amfa2015 section 3 for absolute (see the module documentation)";
         /// α at the end of the run as a fraction of `alpha`, reached geometrically
         /// (α_t = α · alpha_end^(t/N), Yang's code); 1 keeps α constant.
         alpha_end: f64 = YANG_ALPHA_END, Range::Number { lo: Bound::Open(0.0), hi: Bound::Closed(1.0) }, "Yang's FA code (see the module documentation)";
@@ -107,7 +109,9 @@ pub const YANG_ALPHA_END: f64 = 1.0e-4 / 0.9;
 
 impl FaParams {
     /// amfa2015 (Liu et al. 2015, section 5): β₀ = 1, γ = 1, α = 1, 40 fireflies, random term
-    /// in absolute units, α reduced as in Yang's code. The default.
+    /// in absolute units (section 3), α reduced as in Yang's code. The defaults differ only in
+    /// the random term, scaled by each dimension's width as in Yang's code, so a planner's
+    /// step suits any box (a sliced path in metres as much as a unit box).
     pub fn amfa2015() -> Self {
         Self {
             population: 40,
@@ -350,14 +354,14 @@ mod tests {
     #[test]
     fn defaults_are_the_papers() {
         let p = FaParams::default();
-        assert_eq!(p, FaParams::amfa2015());
+        assert_eq!(FaParams { alpha_scale: AlphaScale::Absolute, ..p.clone() }, FaParams::amfa2015());
         assert_eq!((p.population, p.beta0, p.gamma, p.alpha), (40, 1.0, 1.0, 1.0));
         assert_eq!((p.beta_min, p.alpha_end), (0.2, 1.0e-4 / 0.9));
-        assert_eq!(p.alpha_scale, AlphaScale::Absolute);
+        assert_eq!((p.alpha_scale, FaParams::amfa2015().alpha_scale), (AlphaScale::Range, AlphaScale::Absolute));
         assert!(p.checked("p").is_ok());
-        let t: toml::Table = toml::from_str("alpha_scale = \"range\"\ngamma = 0.5").unwrap();
+        let t: toml::Table = toml::from_str("alpha_scale = \"absolute\"\ngamma = 0.5").unwrap();
         let q = FaParams::from_table(&t, "p").unwrap();
-        assert_eq!(*q.get(), FaParams { alpha_scale: AlphaScale::Range, gamma: 0.5, ..FaParams::default() });
+        assert_eq!(*q.get(), FaParams { alpha_scale: AlphaScale::Absolute, gamma: 0.5, ..FaParams::default() });
         assert_eq!(*FaParams::from_table(&FaParams::default().to_table(), "p").unwrap().get(), FaParams::default());
     }
 
@@ -406,7 +410,7 @@ mod tests {
     #[test]
     fn a_sweep_matches_a_hand_computation() {
         let obj = FunctionObjective::new(Function::Sphere, 3, -2.0, 2.0);
-        let mut opt = fa(FaParams { population: 2, ..FaParams::default() });
+        let mut opt = fa(FaParams { population: 2, alpha_scale: AlphaScale::Absolute, ..FaParams::default() });
         let mut rng = run_rng(11, 0);
         let mut ctx = Context::new(&obj, &mut rng, Some(100), false, &[]);
         opt.init(&mut ctx);
