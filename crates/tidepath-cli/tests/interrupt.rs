@@ -95,8 +95,11 @@ fn an_interrupted_bench_and_plan_exit_130_with_what_they_have() {
 #[test]
 fn an_interrupted_reproduction_marks_its_report_incomplete() {
     let dir = tempfile::tempdir().unwrap();
-    let (code, took, stdout) =
-        interrupt(dir.path(), &["reproduce", "amfa2015", "--only", "tables", "--runs", "30", "--out", "r"], Duration::from_secs(2));
+    let (code, took, stdout) = interrupt(
+        dir.path(),
+        &["reproduce", "amfa2015", "--only", "tables", "--runs", "30", "--out", "r"],
+        Duration::from_secs(2),
+    );
     assert_eq!(code, Some(130), "{stdout}");
     assert!(took < Duration::from_secs(1), "{took:?}");
     let report = std::fs::read_to_string(dir.path().join("r/REPORT.md")).unwrap();

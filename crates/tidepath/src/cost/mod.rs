@@ -45,7 +45,8 @@ pub const COST_MODELS: &[Entry<BuildCost>] = &[
     },
     Entry {
         id: "amfa2015",
-        description: "weighted length plus C times the route and evaluation points inside obstacles or the seabed (eqs. 6-8)",
+        description:
+            "weighted length plus C times the route and evaluation points inside obstacles or the seabed (eqs. 6-8)",
         citation: "amfa2015",
         params: Amfa2015Params::SPECS,
         build: amfa2015::build,
