@@ -50,8 +50,9 @@
 //!   is strictly better (AFS, so a firefly's cost never increases). Then the brightest's move.
 //!   A sweep cut by the budget or a stop ends at once.
 //!
-//! Random draws, in order: per pairwise move, D uniform numbers; for the brightest's move, the
-//! other firefly (one `random_range`), then D uniform numbers. Candidates are evaluated one at
+//! Random draws, in order: per pairwise move, D uniform numbers (32-bit resolution, two per
+//! word of the stream: [`fill_unit_f64_32`]); for the brightest's move, the other firefly (one
+//! `random_range`), then D uniform numbers. Candidates are evaluated one at
 //! a time (the AFS decides before the next move), so results do not depend on the thread count.
 
 use rand::Rng as _;
@@ -60,7 +61,7 @@ use super::fa::{distance2, progress, Swarm};
 use super::MAX_POPULATION;
 use super::{clamp, Context, Optimizer};
 use crate::params::{Bound, Checked, Range, Word};
-use crate::rng::fill_unit_f64;
+use crate::rng::fill_unit_f64_32;
 
 crate::params! {
     /// AMFA parameters. Defaults: amfa2015's section 5.
@@ -178,7 +179,7 @@ impl Swarm {
                 }
                 let j = self.order[m];
                 let (gamma, alpha) = coefficients(ctx);
-                fill_unit_f64(ctx.rng(), &mut self.u);
+                fill_unit_f64_32(ctx.rng(), &mut self.u);
                 let (xi, xj) = (self.x.row(i), self.x.row(j));
                 let r2 = distance2(xi, xj);
                 let beta = beta0 * (-gamma * r2).exp();
@@ -210,7 +211,7 @@ impl Swarm {
         let other = ctx.rng().random_range(0..n - 1);
         let other = if other >= b { other + 1 } else { other };
         let (xb, xk) = (self.x.row(b), self.x.row(other));
-        fill_unit_f64(ctx.rng(), &mut self.u);
+        fill_unit_f64_32(ctx.rng(), &mut self.u);
         if per_coordinate {
             amfa_move_per_coordinate(xb, xb, xk, 0.0, alpha, &self.u, ctx.lower(), ctx.upper(), &mut self.cand);
         } else {
@@ -400,7 +401,7 @@ mod tests {
         let (x0, cost0) = (opt.swarm.x.clone(), opt.swarm.cost.clone());
         let mut twin = ctx.rng().clone();
         let mut u = [0.0; 3];
-        fill_unit_f64(&mut twin, &mut u);
+        fill_unit_f64_32(&mut twin, &mut u);
         opt.step(&mut ctx);
         assert_eq!(ctx.evaluations(), 5);
         let mut by_cost: Vec<usize> = (0..4).collect();
@@ -438,11 +439,11 @@ mod tests {
         let b = if opt.swarm.cost[0] <= opt.swarm.cost[1] { 0 } else { 1 };
         let mut twin = ctx.rng().clone();
         let mut skip = [0.0; 2];
-        fill_unit_f64(&mut twin, &mut skip); // the pairwise move's draws
+        fill_unit_f64_32(&mut twin, &mut skip); // the pairwise move's draws
         let other = twin.random_range(0..1usize);
         assert_eq!(other, 0); // the only other firefly, index 1 − b after the skip
         let mut u = [0.0; 2];
-        fill_unit_f64(&mut twin, &mut u);
+        fill_unit_f64_32(&mut twin, &mut u);
         let x_before = opt.swarm.x.clone();
         let cost_b = opt.swarm.cost[b];
         // Run the pairwise move, then look at the positions the brightest's move sees.

@@ -54,15 +54,16 @@
 //! * A stop during a sweep leaves the moved fireflies unevaluated (+inf costs); the run ends
 //!   there.
 //!
-//! Random draws, in order: per move, D uniform numbers (one per coordinate, as
-//! [`fill_unit_f64`] takes them), fireflies from the worst to the brightest. The population is
+//! Random draws, in order: per move, D uniform numbers (one per coordinate, at 32-bit
+//! resolution, two per word of the stream: [`fill_unit_f64_32`]), fireflies from the worst to
+//! the brightest. The population is
 //! evaluated with [`Context::evaluate_population`], so results do not depend on the thread
 //! count.
 
 use super::MAX_POPULATION;
 use super::{clamp, Context, Optimizer, Population};
 use crate::params::{Bound, Checked, Range, Word};
-use crate::rng::fill_unit_f64;
+use crate::rng::fill_unit_f64_32;
 
 /// How FA's random term α (rand − 0.5) relates to the box.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -229,13 +230,13 @@ impl Swarm {
             self.cand.copy_from_slice(self.x.row(i));
             for m in 0..k {
                 let xj = self.x.row(self.order[m]);
-                fill_unit_f64(ctx.rng(), &mut self.u);
+                fill_unit_f64_32(ctx.rng(), &mut self.u);
                 let beta = (beta0 - beta_min) * (-gamma * distance2(&self.cand, xj)).exp() + beta_min;
                 move_in_place(&mut self.cand, xj, beta, alpha, weights, &self.u, ctx.lower(), ctx.upper());
             }
             if k == 0 {
                 // The brightest: a random move.
-                fill_unit_f64(ctx.rng(), &mut self.u);
+                fill_unit_f64_32(ctx.rng(), &mut self.u);
                 let xb = self.x.row(i);
                 move_in_place(&mut self.cand, xb, 0.0, alpha, weights, &self.u, ctx.lower(), ctx.upper());
             }
@@ -417,8 +418,8 @@ mod tests {
         let (x0, cost0) = (opt.swarm.x.clone(), opt.swarm.cost.clone());
         let mut twin = ctx.rng().clone();
         let (mut u1, mut u2) = ([0.0; 3], [0.0; 3]);
-        fill_unit_f64(&mut twin, &mut u1);
-        fill_unit_f64(&mut twin, &mut u2);
+        fill_unit_f64_32(&mut twin, &mut u1);
+        fill_unit_f64_32(&mut twin, &mut u2);
         opt.step(&mut ctx);
         assert_eq!(ctx.evaluations(), 4);
         let (b, w) = if cost0[0] <= cost0[1] { (0, 1) } else { (1, 0) };

@@ -97,7 +97,8 @@ impl Function {
                     100.0 * a * a + b * b
                 })
                 .sum(),
-            Function::Rastrigin => x.iter().map(|v| v * v - 10.0 * (2.0 * PI * v).cos() + 10.0).sum(),
+            Function::Rastrigin if turns_in_range(x) => lanes_sum(x, |v| v * v - 10.0 * cos_2pi_near(v) + 10.0),
+            Function::Rastrigin => x.iter().map(|v| v * v - 10.0 * cos_2pi(*v) + 10.0).sum(),
             Function::Griewank => {
                 let mut sum = 0.0;
                 let mut prod = 1.0;
@@ -110,7 +111,9 @@ impl Function {
             Function::Ackley => {
                 let n = x.len() as f64;
                 let sq = x.iter().map(|v| v * v).sum::<f64>() / n;
-                let cs = x.iter().map(|v| (2.0 * PI * v).cos()).sum::<f64>() / n;
+                let cs =
+                    if turns_in_range(x) { lanes_sum(x, cos_2pi_near) } else { x.iter().map(|v| cos_2pi(*v)).sum() }
+                        / n;
                 // Grouped so that the value at the optimum is exactly 0.
                 20.0 * (1.0 - (-0.2 * sq.sqrt()).exp()) + (E - cs.exp())
             }
@@ -297,8 +300,126 @@ impl Objective for FunctionObjective {
     }
 }
 
+/// The sum of `term` over `x`, four coordinates at a time into four partial sums (then added
+/// in a fixed order, so the value is deterministic): independent lanes let the compiler
+/// evaluate `term` for several coordinates at once.
+#[inline]
+fn lanes_sum(x: &[f64], term: impl Fn(f64) -> f64) -> f64 {
+    let mut acc = [0.0f64; 4];
+    let chunks = x.chunks_exact(4);
+    let tail = chunks.remainder();
+    for c in chunks {
+        for k in 0..4 {
+            acc[k] += term(c[k]);
+        }
+    }
+    let mut rest = 0.0;
+    for &v in tail {
+        rest += term(v);
+    }
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + rest
+}
+
+/// cos(2π v), with the turn count taken out exactly: v = n/4 + r with n an integer and
+/// |r| ≤ 1/8 (both exact in floating point), then cos or sin of 2π r (|2π r| ≤ π/4) by
+/// minimax polynomials and the quadrant n mod 4. Where
+/// `(2.0 * PI * v).cos()` first rounds 2π v (an error of 1e-13 at v = 100), this reduces v
+/// exactly: integers give exactly 1, half-integers exactly −1. About four times faster than
+/// libm's `cos` (no data-dependent branches), which makes Rastrigin and Ackley, the benchmark
+/// tables' most common functions, as cheap as they should be. Falls back to libm for |v| ≥ 2^49.
+#[inline]
+pub fn cos_2pi(v: f64) -> f64 {
+    if v.is_nan() || v.abs() >= MAX_TURNS {
+        return (std::f64::consts::TAU * v).cos();
+    }
+    cos_2pi_near(v)
+}
+
+/// |v| below which [`cos_2pi_near`] holds (2^49: 4v + 1.5 · 2^52 is exact).
+const MAX_TURNS: f64 = 562_949_953_421_312.0;
+
+/// Whether every coordinate is within [`MAX_TURNS`] (NaN is not), so a whole vector can take
+/// [`cos_2pi_near`] without a branch per coordinate, which would keep the compiler from
+/// evaluating several coordinates at once.
+#[inline]
+fn turns_in_range(x: &[f64]) -> bool {
+    x.iter().fold(true, |ok, v| ok & (v.abs() < MAX_TURNS))
+}
+
+/// [`cos_2pi`] for |v| < [`MAX_TURNS`], without the check.
+#[inline(always)]
+fn cos_2pi_near(v: f64) -> f64 {
+    // 1.5 · 2^52: adding it rounds to an integer (ties to even) for |4v| < 2^51.
+    const ROUND: f64 = 6_755_399_441_055_744.0;
+    let shifted = 4.0 * v + ROUND;
+    let n = shifted - ROUND;
+    // ROUND is a multiple of 4, so the low bits of the shifted value are n mod 4.
+    let q = shifted.to_bits() & 3;
+    let x = std::f64::consts::TAU * (v - 0.25 * n);
+    let x2 = x * x;
+    // Minimax polynomials on [−π/4, π/4] (the coefficients of fdlibm's __kernel_cos and
+    // __kernel_sin, errors below 2^−58): degree 14 and 13.
+    const C: [f64; 6] = [
+        0.0416666666666666,
+        -0.001388888888887411,
+        2.480158728947673e-05,
+        -2.7557314351390663e-07,
+        2.087572321298175e-09,
+        -1.1359647557788195e-11,
+    ];
+    const S: [f64; 6] = [
+        -0.16666666666666632,
+        0.00833333333332249,
+        -0.0001984126982985795,
+        2.7557313707070068e-06,
+        -2.5050760253406863e-08,
+        1.58969099521155e-10,
+    ];
+    let x4 = x2 * x2;
+    let c = 1.0 - 0.5 * x2 + x4 * (C[0] + x2 * (C[1] + x2 * (C[2] + x2 * (C[3] + x2 * (C[4] + x2 * C[5])))));
+    let s = x + x * x2 * (S[0] + x2 * (S[1] + x2 * (S[2] + x2 * (S[3] + x2 * (S[4] + x2 * S[5])))));
+    // Quadrant without branches (a mispredicted branch per coordinate costs more than both
+    // series): odd quadrants take the sine, quadrants 1 and 2 flip the sign.
+    let odd = 0u64.wrapping_sub(q & 1);
+    let sign = (((q + 1) >> 1) & 1) << 63;
+    f64::from_bits(((c.to_bits() & !odd) | (s.to_bits() & odd)) ^ sign)
+}
+
 #[cfg(test)]
 mod tests {
+    /// cos(2π v) agrees with libm to 1e-15 where libm's argument is exact enough (|v| < 1),
+    /// to the rounding of 2π v beyond, and is exact at integers and half-integers.
+    #[test]
+    fn cos_2pi_matches_libm_and_is_exact_at_whole_turns() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut worst_small = 0.0f64;
+        for k in 0..200_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let u = (state >> 11) as f64 / (1u64 << 53) as f64;
+            let v = if k % 2 == 0 { 2.0 * u - 1.0 } else { 2000.0 * u - 1000.0 };
+            let libm = (std::f64::consts::TAU * v).cos();
+            let ours = cos_2pi(v);
+            // libm's argument 2π v carries an error of about |2π v| 1.1e-16.
+            let allowed = 1e-15 + std::f64::consts::TAU * v.abs() * 2.3e-16;
+            assert!((ours - libm).abs() <= allowed, "v = {v}: {ours} vs {libm}");
+            if v.abs() < 1.0 {
+                worst_small = worst_small.max((ours - libm).abs());
+            }
+        }
+        assert!(worst_small < 1e-15, "{worst_small}");
+        for k in [-1000.0, -3.0, -1.0, 0.0, 1.0, 2.0, 7.0, 599.0] {
+            assert_eq!(cos_2pi(k), 1.0, "{k}");
+            assert_eq!(cos_2pi(k + 0.5), -1.0, "{k}");
+            assert!(cos_2pi(k + 0.25).abs() < 1e-16, "{k}");
+        }
+        assert_eq!(cos_2pi(1e300), (std::f64::consts::TAU * 1e300).cos());
+        assert!(cos_2pi(f64::NAN).is_nan() && cos_2pi(f64::INFINITY).is_nan());
+        assert_eq!(Function::Rastrigin.value(&[0.0; 30]), 0.0);
+        assert_eq!(Function::Rastrigin.value(&[1.0, -2.0, 3.0]), 14.0);
+    }
+
     use super::*;
 
     fn close(a: f64, b: f64, tol: f64) -> bool {
