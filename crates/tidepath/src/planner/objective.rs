@@ -291,24 +291,33 @@ mod tests {
         w
     }
 
-    fn with_objective(three_d: bool, f: impl FnOnce(&PathObjective<'_>, &Sliced)) {
+    /// The start and goal of the test mission.
+    const START: Vec3 = Vec3::new(0.0, 1000.0, -500.0);
+    const GOAL: Vec3 = Vec3::new(4000.0, 600.0, -500.0);
+
+    /// The test problem in [`world`] for vehicle `v`, from [`START`] to [`GOAL`].
+    fn with_problem(v: Vehicle, f: impl FnOnce(&Problem<'_>)) {
         let w = world();
-        let v = Vehicle { depth_max: 1000.0, safety_distance: 0.0, ..Vehicle::default() };
-        let (s, g) = (Vec3::new(0.0, 1000.0, -500.0), Vec3::new(4000.0, 600.0, -500.0));
-        let missions = [Mission::new("m", v, s, g, 0.0)];
+        let missions = [Mission::new("m", v, START, GOAL, 0.0)];
         let settings = ModelSettings::default();
         let cost = GeneralCost::new(GeneralWeights::default().checked("w").unwrap());
-        let problem = Problem {
+        f(&Problem {
             world: &w,
             settings: &settings,
             cost: &cost,
             missions: &missions,
             fleet: &crate::fleet::NO_FLEET,
-        };
-        let band = three_d.then_some((-1000.0, 0.0));
-        let enc = Sliced::along(s, g, 3, &w.bounds, band, SliceAxis::X).unwrap();
-        let objective = PathObjective::new(&problem, vec![Box::new(enc.clone())]);
-        f(&objective, &enc);
+        });
+    }
+
+    fn with_objective(three_d: bool, f: impl FnOnce(&PathObjective<'_>, &Sliced)) {
+        let v = Vehicle { depth_max: 1000.0, safety_distance: 0.0, ..Vehicle::default() };
+        with_problem(v, |problem| {
+            let band = three_d.then_some((-1000.0, 0.0));
+            let enc = Sliced::along(START, GOAL, 3, &problem.world.bounds, band, SliceAxis::X).unwrap();
+            let objective = PathObjective::new(problem, vec![Box::new(enc.clone())]);
+            f(&objective, &enc);
+        });
     }
 
     /// Lateral offsets (from y = 1000) 0, 400, -200 on planes x = 1000, 2000, 3000; the goal's
@@ -338,41 +347,32 @@ mod tests {
     fn exclude_contract_repair_leaves_no_point_inside() {
         use crate::encoding::FreeWaypoints;
         use rand::Rng as _;
-        let w = world();
         let v =
             Vehicle { depth_max: 1000.0, safety_distance: 5.0, max_turn: std::f64::consts::PI, ..Vehicle::default() };
-        let (s, g) = (Vec3::new(0.0, 1000.0, -500.0), Vec3::new(4000.0, 600.0, -500.0));
-        let missions = [Mission::new("m", v, s, g, 0.0)];
-        let settings = ModelSettings::default();
-        let cost = GeneralCost::new(GeneralWeights::default().checked("w").unwrap());
-        let problem = Problem {
-            world: &w,
-            settings: &settings,
-            cost: &cost,
-            missions: &missions,
-            fleet: &crate::fleet::NO_FLEET,
-        };
-        let enc = FreeWaypoints::new(s, g, 12, &w.bounds, problem.z_range(0)).unwrap();
-        let repair = crate::repair::build_repair("exclude-contract", None).unwrap();
-        let objective = PathObjective::new(&problem, vec![Box::new(enc)]).with_repair(Some(repair));
-        let model = problem.path_model(0);
-        let mut rng = crate::rng::run_rng(3, 0);
-        let mut inside_before = 0;
-        for _ in 0..100 {
-            let mut x: Vec<f64> = (0..objective.dim())
-                .map(|j| objective.lower()[j] + rng.random::<f64>() * (objective.upper()[j] - objective.lower()[j]))
-                .collect();
-            let before = objective.decode(&x).remove(0);
-            inside_before += before.iter().filter(|p| model.validator.state(**p, 0.0).is_err()).count();
-            objective.repair(&mut x);
-            let after = objective.decode(&x).remove(0);
-            assert_eq!((after[0], *after.last().unwrap()), (s, g));
-            for p in &after[1..after.len() - 1] {
-                assert!(model.validator.state(*p, 0.0).is_ok(), "{p} still invalid: {after:?}");
-                assert!(!w.obstacles[0].contains(*p, 0.0, 0.0));
+        with_problem(v, |problem| {
+            let (w, s, g) = (problem.world, START, GOAL);
+            let enc = FreeWaypoints::new(s, g, 12, &w.bounds, problem.z_range(0)).unwrap();
+            let repair = crate::repair::build_repair("exclude-contract", None).unwrap();
+            let objective = PathObjective::new(problem, vec![Box::new(enc)]).with_repair(Some(repair));
+            let model = problem.path_model(0);
+            let mut rng = crate::rng::run_rng(3, 0);
+            let mut inside_before = 0;
+            for _ in 0..100 {
+                let mut x: Vec<f64> = (0..objective.dim())
+                    .map(|j| objective.lower()[j] + rng.random::<f64>() * (objective.upper()[j] - objective.lower()[j]))
+                    .collect();
+                let before = objective.decode(&x).remove(0);
+                inside_before += before.iter().filter(|p| model.validator.state(**p, 0.0).is_err()).count();
+                objective.repair(&mut x);
+                let after = objective.decode(&x).remove(0);
+                assert_eq!((after[0], *after.last().unwrap()), (s, g));
+                for p in &after[1..after.len() - 1] {
+                    assert!(model.validator.state(*p, 0.0).is_ok(), "{p} still invalid: {after:?}");
+                    assert!(!w.obstacles[0].contains(*p, 0.0, 0.0));
+                }
             }
-        }
-        assert!(inside_before > 0, "no random point started inside: the test tests nothing");
+            assert!(inside_before > 0, "no random point started inside: the test tests nothing");
+        });
     }
 
     /// The sphere fills the middle of plane x = 2000: a rectangle inside it has no free cell, one
