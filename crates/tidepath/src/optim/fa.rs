@@ -344,7 +344,7 @@ impl Optimizer for Fa {
 mod tests {
     use super::*;
     use crate::optim::functions::{Function, FunctionObjective};
-    use crate::optim::run;
+    use crate::optim::{run, test_support};
     use crate::rng::run_rng;
     use crate::termination::Termination;
 
@@ -468,25 +468,12 @@ mod tests {
     #[test]
     fn stops_exactly_at_the_evaluation_budget() {
         let obj = FunctionObjective::new(Function::Rastrigin, 7, -5.12, 5.12);
-        for budget in [1u64, 39, 40, 41, 1000, 3001] {
-            let mut opt = fa(FaParams::default());
-            let r = run(&mut opt, &obj, &Termination::evaluations(budget), &mut run_rng(5, 0), false, &[], &mut |_| {});
-            assert_eq!(r.evaluations, budget);
-            assert!(r.best_cost.is_finite());
-        }
+        test_support::assert_exact_budgets(&obj, &[1u64, 39, 40, 41, 1000, 3001], || Box::new(fa(FaParams::default())));
     }
 
     #[test]
     fn same_seed_same_bits() {
         let obj = FunctionObjective::new(Function::Ackley, 10, -32.0, 32.0);
-        let go = |parallel| {
-            let mut opt = fa(FaParams::default());
-            run(&mut opt, &obj, &Termination::evaluations(4_000), &mut run_rng(9, 2), parallel, &[], &mut |_| {})
-        };
-        let (a, b) = (go(false), go(true));
-        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-        assert_eq!(bits(&a.best_x), bits(&b.best_x));
-        assert_eq!(bits(&a.history), bits(&b.history));
-        assert_eq!(a.iterations, b.iterations);
+        test_support::assert_same_bits(&obj, || Box::new(fa(FaParams::default())));
     }
 }

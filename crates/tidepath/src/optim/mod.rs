@@ -21,6 +21,8 @@ pub mod mwpa;
 pub mod population;
 pub mod pso;
 pub mod runner;
+#[cfg(test)]
+mod test_support;
 mod wolf;
 pub mod wpa;
 
