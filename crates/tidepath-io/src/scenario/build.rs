@@ -66,9 +66,9 @@ impl Scenario {
 
     pub fn from_spec(spec: ScenarioSpec, source: &str) -> Result<Self> {
         let local = super::geographic::localise(&spec, source)?;
-        let mut world = build_world(&local.spec.world)?;
-        world.frame = local.frame.clone();
         let vehicle = build_vehicle(&spec.vehicle, "vehicle")?;
+        let mut world = build_world(&local.spec.world, vehicle.speed)?;
+        world.frame = local.frame.clone();
         let mut warnings = local.warnings;
         let missions = build_missions(&local.spec, &vehicle, &world)?;
         let settings = build_settings(&spec.model, &world)?;
@@ -79,6 +79,7 @@ impl Scenario {
             frame: local.frame.as_ref(),
             epoch: local.epoch,
             source,
+            vehicle_speed: vehicle.speed,
         };
         let changes = super::changes_build::build_changes(&spec.changes, &cx, &mut warnings)?;
         let simulate = super::changes_build::build_simulate(spec.simulate.as_ref())?;

@@ -43,6 +43,8 @@ pub(super) struct ChangeContext<'a> {
     pub epoch: Option<DateTime<Utc>>,
     /// The scenario's file path or `builtin:NAME`, for data file paths.
     pub source: &'a str,
+    /// The scenario's `[vehicle] speed` (m/s), for a jet's `speed_ratio`.
+    pub vehicle_speed: f64,
 }
 
 /// Every change of `specs`, checked; warnings (a data file found built in) go to `warnings`.
@@ -217,7 +219,7 @@ fn build_change(
                 };
                 c = forecast_grid(&c, &field("current"), frame, cx.metric, cx.source, Some(epoch), warnings)?.0;
             }
-            let current = build_current(&c, &cx.world.bounds, &field("current"))?;
+            let current = build_current(&c, &cx.world.bounds, &field("current"), cx.vehicle_speed)?;
             if let Some(n) = vortex_count(&current) {
                 list.vortices = list.vortices.max(n);
             }

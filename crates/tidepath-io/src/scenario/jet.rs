@@ -5,14 +5,30 @@ use tidepath::error::{Error, Result};
 use tidepath::geom::Aabb;
 use tidepath::world::current::{JetConfig, Magnitude, MeanderingJet};
 
-pub(super) fn build_jet(spec: &JetSpec, bounds: &Aabb) -> Result<MeanderingJet> {
-    let magnitude = match (spec.speed, spec.max_speed) {
-        (Some(s), None) => Magnitude::Fixed(s),
-        (None, Some(s)) => Magnitude::Scaled(s),
+/// The jet of `spec` over `bounds`. ijs2023 states the current's magnitude as a ratio of the
+/// AUV's speed (0.5 in its Table 2, 0.8 and 1.2 in Table 3, 0.2 for the fleet): `speed_ratio`
+/// and `max_speed_ratio` multiply `vehicle_speed` (the scenario's `[vehicle] speed`) into the
+/// `speed` and `max_speed` forms.
+pub(super) fn build_jet(spec: &JetSpec, bounds: &Aabb, vehicle_speed: f64) -> Result<MeanderingJet> {
+    let ratio = |field: &str, r: f64| -> Result<f64> {
+        if !(r.is_finite() && r >= 0.0) {
+            return Err(Error::input(
+                format!("world.current.{field}"),
+                format!("must be a finite non-negative ratio of the vehicle's speed, got {r}"),
+            ));
+        }
+        Ok(r * vehicle_speed)
+    };
+    let given = [spec.speed, spec.max_speed, spec.speed_ratio, spec.max_speed_ratio];
+    let magnitude = match (given.iter().filter(|v| v.is_some()).count(), given) {
+        (1, [Some(s), ..]) => Magnitude::Fixed(s),
+        (1, [_, Some(s), ..]) => Magnitude::Scaled(s),
+        (1, [_, _, Some(r), _]) => Magnitude::Fixed(ratio("speed_ratio", r)?),
+        (1, [_, _, _, Some(r)]) => Magnitude::Scaled(ratio("max_speed_ratio", r)?),
         _ => {
             return Err(Error::input(
                 "world.current",
-                "a jet needs exactly one of `speed` (m/s everywhere) or `max_speed` (m/s at its fastest point)",
+                "a jet needs exactly one of `speed` (m/s everywhere), `max_speed` (m/s at its fastest point), `speed_ratio` or `max_speed_ratio` (the same as ratios of [vehicle] speed)",
             ))
         }
     };

@@ -282,6 +282,13 @@ pub struct JetSpec {
     /// Alternatively scale so the jet's fastest point moves at this speed (m/s).
     #[serde(default)]
     pub max_speed: Option<f64>,
+    /// `speed` as a ratio of the scenario's `[vehicle] speed` (ijs2023: 0.5, 0.8, 1.2; 0.2 for
+    /// its fleet).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub speed_ratio: Option<f64>,
+    /// `max_speed` as a ratio of the scenario's `[vehicle] speed`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_speed_ratio: Option<f64>,
     /// Seconds per jet time unit (default 2000).
     #[serde(default)]
     pub time_scale: Option<f64>,

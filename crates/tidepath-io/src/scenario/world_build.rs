@@ -18,7 +18,9 @@ fn check_features(field: &str, n: usize) -> Result<()> {
     Ok(())
 }
 
-pub(super) fn build_world(spec: &WorldSpec) -> Result<World> {
+/// The world of `spec`; `vehicle_speed` (the scenario's `[vehicle] speed`, m/s) turns a jet's
+/// `speed_ratio` into metres per second.
+pub(super) fn build_world(spec: &WorldSpec, vehicle_speed: f64) -> Result<World> {
     let dims = match spec.dimensions {
         2 => Dims::Two,
         3 => Dims::Three,
@@ -52,7 +54,7 @@ pub(super) fn build_world(spec: &WorldSpec) -> Result<World> {
         .enumerate()
         .map(|(i, o)| build_obstacle(&format!("world.obstacles[{i}]"), o))
         .collect::<Result<Vec<_>>>()?;
-    let current = build_current(&spec.current, &bounds, "world.current")?;
+    let current = build_current(&spec.current, &bounds, "world.current", vehicle_speed)?;
     Ok(World { bounds, dims, terrain, obstacles, current, frame: None })
 }
 
@@ -186,9 +188,10 @@ fn kind_id(k: ObstacleKind) -> &'static str {
     }
 }
 
-/// A current, `at` naming it in errors (`world.current`, `changes[2].current`).
-pub(super) fn build_current(spec: &CurrentSpec, bounds: &Aabb, at: &str) -> Result<Current> {
-    build_world_current(spec, bounds, at).map_err(|e| match e {
+/// A current, `at` naming it in errors (`world.current`, `changes[2].current`);
+/// `vehicle_speed` (m/s) is what a jet's `speed_ratio` multiplies.
+pub(super) fn build_current(spec: &CurrentSpec, bounds: &Aabb, at: &str, vehicle_speed: f64) -> Result<Current> {
+    build_world_current(spec, bounds, at, vehicle_speed).map_err(|e| match e {
         // The jet, cell and grid builders name `world.current`.
         Error::Input { field, message } if at != "world.current" && field.starts_with("world.current") => {
             Error::input(format!("{at}{}", &field["world.current".len()..]), message)
@@ -197,7 +200,7 @@ pub(super) fn build_current(spec: &CurrentSpec, bounds: &Aabb, at: &str) -> Resu
     })
 }
 
-fn build_world_current(spec: &CurrentSpec, bounds: &Aabb, at: &str) -> Result<Current> {
+fn build_world_current(spec: &CurrentSpec, bounds: &Aabb, at: &str, vehicle_speed: f64) -> Result<Current> {
     Ok(match spec {
         CurrentSpec::None => Current::None,
         CurrentSpec::Uniform { velocity } => Current::Uniform(Vec3::from_array(*velocity)),
@@ -210,7 +213,7 @@ fn build_world_current(spec: &CurrentSpec, bounds: &Aabb, at: &str) -> Result<Cu
             }
             Current::Vortices(out)
         }
-        CurrentSpec::Jet(jet) => Current::Jet(super::jet::build_jet(jet, bounds)?),
+        CurrentSpec::Jet(jet) => Current::Jet(super::jet::build_jet(jet, bounds, vehicle_speed)?),
         // Geographic scenarios turn forecast files into grids before the world is built.
         CurrentSpec::File { .. } => {
             return Err(Error::input(format!("{at}.kind"), "\"file\" needs world.frame = \"geographic\""))
