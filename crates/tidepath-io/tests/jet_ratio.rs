@@ -30,12 +30,14 @@ fn speed_at(s: &Scenario, p: Vec3) -> f64 {
 fn speed_ratio_gives_that_share_of_the_vehicle_speed_everywhere_the_jet_flows() {
     for (ratio, vehicle) in [(0.5, 1.542), (0.8, 1.542), (1.2, 2.0)] {
         let s = Scenario::from_toml(&jet_scenario(&format!("speed_ratio = {ratio}"), vehicle), "t.toml").unwrap();
-        for p in [Vec3::new(1000.0, 3000.0, -50.0), Vec3::new(7000.0, 1500.0, -50.0), Vec3::new(4000.0, 4500.0, -300.0)] {
+        for p in [Vec3::new(1000.0, 3000.0, -50.0), Vec3::new(7000.0, 1500.0, -50.0), Vec3::new(4000.0, 4500.0, -300.0)]
+        {
             let v = speed_at(&s, p);
             assert!((v - ratio * vehicle).abs() < 1e-9, "ratio {ratio}: {v} at {p:?}");
         }
         // The same as the absolute form.
-        let abs = Scenario::from_toml(&jet_scenario(&format!("speed = {}", ratio * vehicle), vehicle), "t.toml").unwrap();
+        let abs =
+            Scenario::from_toml(&jet_scenario(&format!("speed = {}", ratio * vehicle), vehicle), "t.toml").unwrap();
         let p = Vec3::new(3333.0, 2222.0, -10.0);
         assert_eq!(s.world.current.velocity(p, 100.0), abs.world.current.velocity(p, 100.0));
     }

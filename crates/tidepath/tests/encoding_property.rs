@@ -2,7 +2,7 @@
 //! and depth band, for any start and goal, and the path always runs from start to goal.
 
 use proptest::prelude::*;
-use tidepath::encoding::{Encoding, FreeWaypoints, Sliced};
+use tidepath::encoding::{Encoding, FreeWaypoints, Posture, Sliced, StepLimit};
 use tidepath::geom::{Aabb, Vec3};
 
 fn domain() -> Aabb {
@@ -98,5 +98,54 @@ proptest! {
         waypoints_round_trip(&sliced, &inside(&sliced, &u))?;
         let free = FreeWaypoints::new(start, goal, n, &domain(), band).unwrap();
         waypoints_round_trip(&free, &inside(&free, &u))?;
+    }
+}
+
+/// Lateral offset of `p` from the start-goal line (left of travel positive) and its height.
+fn lateral_and_z(start: Vec3, goal: Vec3, p: Vec3) -> (f64, f64) {
+    let axis = (goal - start).truncate().normalize();
+    ((p.truncate() - start.truncate()).dot(axis.perp()), p.z)
+}
+
+proptest! {
+    /// ijs2023 eq. 14: between consecutive planes (the start counting as plane 0) the decoded
+    /// path moves at most UB sideways and UR vertically, for any vector at all (inside the box
+    /// or not, repaired or not), and repairing changes nothing the decoding would not.
+    #[test]
+    fn sliced_posture_limits_hold_for_any_vector(
+        start in point(),
+        goal in point(),
+        n in 1usize..40,
+        ub in 5.0..800.0f64,
+        ur in 1.0..120.0f64,
+        raw in prop::collection::vec(-6000.0..6000.0f64, 1..80),
+    ) {
+        prop_assume!((goal - start).truncate().length() > 100.0);
+        let band = (-280.0, -5.0);
+        let posture = Posture { lateral: Some(StepLimit::Metres(ub)), vertical: Some(StepLimit::Metres(ur)) };
+        let Ok(enc) = Sliced::new(start, goal, n, &domain(), Some(band)).and_then(|e| e.with_posture(posture)) else {
+            // Only when the start lies outside the band by more than the steps can reach.
+            prop_assume!(false);
+            unreachable!()
+        };
+        let x: Vec<f64> = raw.iter().cycle().take(enc.dim()).copied().collect();
+        let path = enc.decode(&x);
+        let tol = 1e-9 * (1.0 + ub + ur + 6000.0);
+        for w in path[..=n].windows(2) {
+            let (l0, z0) = lateral_and_z(start, goal, w[0]);
+            let (l1, z1) = lateral_and_z(start, goal, w[1]);
+            prop_assert!((l1 - l0).abs() <= ub + tol, "lateral step {} > {}", (l1 - l0).abs(), ub);
+            prop_assert!((z1 - z0).abs() <= ur + tol, "vertical step {} > {}", (z1 - z0).abs(), ur);
+        }
+        for p in &path[1..=n] {
+            prop_assert!(domain().contains(*p), "{:?} outside the domain", p);
+            prop_assert!(p.z >= band.0 - tol && p.z <= band.1 + tol, "{:?} outside the band", p);
+        }
+        let mut repaired = x.clone();
+        enc.repair(&mut repaired);
+        prop_assert_eq!(enc.decode(&repaired), path);
+        let mut twice = repaired.clone();
+        enc.repair(&mut twice);
+        prop_assert_eq!(twice, repaired);
     }
 }

@@ -186,6 +186,7 @@ impl Scenario {
             bounds: &self.world.bounds,
             z_range: self.z_range(),
             axis: self.encoding.axis,
+            posture: self.encoding.posture()?,
         })
     }
 }

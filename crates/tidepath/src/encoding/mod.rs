@@ -2,9 +2,11 @@
 //! their bounds and constraints, so every optimizer gets them for free through `repair`.
 
 pub mod free;
+pub mod posture;
 pub mod sliced;
 
 pub use free::FreeWaypoints;
+pub use posture::{Posture, StepLimit};
 pub use sliced::Sliced;
 
 use crate::error::Result;
@@ -24,6 +26,8 @@ pub struct EncodingArgs<'a> {
     pub z_range: Option<(f64, f64)>,
     /// The sliced encoding's main axis.
     pub axis: SliceAxis,
+    /// The sliced encoding's posture limits (ijs2023 eq. 14).
+    pub posture: Posture,
 }
 
 /// The direction the sliced encoding's planes are spaced along (`[encoding] axis`).
@@ -66,6 +70,19 @@ pub struct EncodingSpec {
     /// Each repair's parameters, `[encoding.repair_params.ID]`.
     #[serde(skip_serializing_if = "std::collections::BTreeMap::is_empty")]
     pub repair_params: std::collections::BTreeMap<String, toml::Table>,
+    /// The sliced encoding's posture limits (ijs2023 eq. 14), metres between planes: the
+    /// largest sideways move (UB) ...
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral_step: Option<f64>,
+    /// ... and vertical move (UR).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vertical_step: Option<f64>,
+    /// The same limits as angles: UB = spacing x tan(heading_limit_deg) ...
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heading_limit_deg: Option<f64>,
+    /// ... and UR = spacing x tan(pitch_limit_deg).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pitch_limit_deg: Option<f64>,
 }
 
 impl Default for EncodingSpec {
@@ -76,6 +93,10 @@ impl Default for EncodingSpec {
             axis: SliceAxis::Path,
             repair: None,
             repair_params: std::collections::BTreeMap::new(),
+            lateral_step: None,
+            vertical_step: None,
+            heading_limit_deg: None,
+            pitch_limit_deg: None,
         }
     }
 }
@@ -97,6 +118,11 @@ impl EncodingSpec {
     /// The spec with its waypoint count checked (`encoding.waypoints` in errors).
     pub fn checked(&self) -> Result<Checked<EncodingParams>> {
         EncodingParams { waypoints: self.waypoints }.checked("encoding")
+    }
+
+    /// The posture limits of `[encoding]` (checked: field and value named on error).
+    pub fn posture(&self) -> Result<Posture> {
+        Posture::from_spec(self.lateral_step, self.heading_limit_deg, self.vertical_step, self.pitch_limit_deg)
     }
 
     /// The repair to apply inside the search: `[encoding] repair` ("none": none), else
@@ -133,7 +159,11 @@ pub const ENCODINGS: &[Entry<BuildEncoding>] = &[
         description: "one waypoint on each of n planes across the start-goal axis (cannot turn back along it)",
         citation: "wpa2017 section 3.1, lfhh2019 eqs. 12-13, ijs2023 section 3.1 (generalised to any axis)",
         params: EncodingParams::SPECS,
-        build: |a| Ok(Box::new(Sliced::along(a.start, a.goal, a.waypoints, a.bounds, a.z_range, a.axis)?)),
+        build: |a| {
+            Ok(Box::new(
+                Sliced::along(a.start, a.goal, a.waypoints, a.bounds, a.z_range, a.axis)?.with_posture(a.posture)?,
+            ))
+        },
     },
     Entry {
         id: "free",
@@ -145,6 +175,12 @@ pub const ENCODINGS: &[Entry<BuildEncoding>] = &[
                 return Err(crate::error::Error::input(
                     "encoding.axis",
                     "only the sliced encoding has an axis; the free encoding places waypoints anywhere",
+                ));
+            }
+            if !a.posture.is_none() {
+                return Err(crate::error::Error::input(
+                    "encoding.lateral_step",
+                    "posture limits (lateral_step, vertical_step, heading_limit_deg, pitch_limit_deg) are the sliced encoding's: its waypoints lie on planes",
                 ));
             }
             Ok(Box::new(FreeWaypoints::new(a.start, a.goal, a.waypoints, a.bounds, a.z_range)?))

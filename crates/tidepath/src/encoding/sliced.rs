@@ -11,10 +11,14 @@
 //! Bounds are derived from the world: each plane's lateral range is where it crosses the domain
 //! rectangle (so every decoded waypoint lies inside the domain) and z spans the domain box
 //! intersected with the vehicle's depth band.
+//!
+//! Posture limits (ijs2023 eq. 14, [`super::posture`]): at most UB sideways and UR vertically
+//! between consecutive planes, enforced by `repair` and again when decoding.
 
 use crate::error::{Error, Result};
 use crate::geom::{Aabb, Vec2, Vec3};
 
+use super::posture::{Posture, StepChain};
 use super::{Encoding, SliceAxis};
 
 #[derive(Clone, Debug)]
@@ -31,6 +35,9 @@ pub struct Sliced {
     three_d: bool,
     lower: Vec<f64>,
     upper: Vec<f64>,
+    /// eq. 14's lateral and vertical chains, when limited.
+    lateral: Option<StepChain>,
+    vertical: Option<StepChain>,
 }
 
 impl Sliced {
@@ -106,7 +113,62 @@ impl Sliced {
                 ));
             }
         }
-        Ok(Self { start, goal, axis, normal, stations, span: dist, three_d: z_range.is_some(), lower, upper })
+        Ok(Self {
+            start,
+            goal,
+            axis,
+            normal,
+            stations,
+            span: dist,
+            three_d: z_range.is_some(),
+            lower,
+            upper,
+            lateral: None,
+            vertical: None,
+        })
+    }
+
+    /// The encoding with ijs2023's posture limits (eq. 14): steps converted to metres with the
+    /// plane spacing, chains checked to fit the box.
+    pub fn with_posture(mut self, posture: Posture) -> Result<Self> {
+        let spacing = self.span / (self.stations.len() + 1) as f64;
+        let per = self.waypoint_dim();
+        let column = |v: &[f64], j: usize| v.iter().skip(j).step_by(per).copied().collect::<Vec<_>>();
+        if let Some(limit) = posture.lateral {
+            let (lo, hi) = (column(&self.lower, 0), column(&self.upper, 0));
+            self.lateral = Some(StepChain::new(0.0, limit.metres(spacing), &lo, &hi, "lateral_step")?);
+        }
+        if let Some(limit) = posture.vertical {
+            if !self.three_d {
+                return Err(Error::input(
+                    "encoding.vertical_step",
+                    "a 2-D world has no vertical move between planes (heights are interpolated)",
+                ));
+            }
+            let (lo, hi) = (column(&self.lower, 1), column(&self.upper, 1));
+            self.vertical = Some(StepChain::new(self.start.z, limit.metres(spacing), &lo, &hi, "vertical_step")?);
+        }
+        Ok(self)
+    }
+
+    /// eq. 14's largest lateral and vertical steps (m), when limited.
+    pub fn posture_steps(&self) -> (Option<f64>, Option<f64>) {
+        (self.lateral.as_ref().map(StepChain::step), self.vertical.as_ref().map(StepChain::step))
+    }
+
+    /// Applies the posture chains to `x` in place (each variable into its predecessor's
+    /// window); the box too, since each chain's intervals lie inside it.
+    fn apply_posture(&self, x: &mut [f64]) {
+        let per = self.waypoint_dim();
+        for (j, chain) in [&self.lateral, &self.vertical].into_iter().enumerate() {
+            let Some(chain) = chain else { continue };
+            let mut prev = chain.start();
+            for k in 0..self.stations.len() {
+                let v = &mut x[per * k + j];
+                *v = chain.clamp(k, prev, *v);
+                prev = *v;
+            }
+        }
     }
 
     pub fn waypoints(&self) -> usize {
@@ -151,14 +213,36 @@ impl Encoding for Sliced {
         &self.upper
     }
 
+    /// The path of `x`, with the posture limits applied on the way (so a vector no repair saw
+    /// decodes to the path its repair would give).
     fn decode_into(&self, x: &[f64], out: &mut Vec<Vec3>) {
         out.clear();
         out.push(self.start);
         let per = self.waypoint_dim();
+        let (mut lat, mut z) =
+            (self.lateral.as_ref().map(StepChain::start), self.vertical.as_ref().map(StepChain::start));
+        let mut v = [0.0; 2];
         for k in 0..self.stations.len() {
-            out.push(self.waypoint_at(k, &x[per * k..per * k + per]));
+            v[..per].copy_from_slice(&x[per * k..per * k + per]);
+            if let (Some(c), Some(p)) = (&self.lateral, lat.as_mut()) {
+                v[0] = c.clamp(k, *p, v[0]);
+                *p = v[0];
+            }
+            if let (Some(c), Some(p)) = (&self.vertical, z.as_mut()) {
+                v[1] = c.clamp(k, *p, v[1]);
+                *p = v[1];
+            }
+            out.push(self.waypoint_at(k, &v[..per]));
         }
         out.push(self.goal);
+    }
+
+    /// Clamps to the box, then applies the posture limits from the start onward.
+    fn repair(&self, x: &mut [f64]) {
+        for ((v, lo), hi) in x.iter_mut().zip(&self.lower).zip(&self.upper) {
+            *v = v.clamp(*lo, *hi);
+        }
+        self.apply_posture(x);
     }
 
     fn waypoint_dim(&self) -> usize {
@@ -209,6 +293,7 @@ impl Encoding for Sliced {
         for ((v, lo), hi) in x.iter_mut().zip(&self.lower).zip(&self.upper) {
             *v = if v.is_finite() { v.clamp(*lo, *hi) } else { 0.5 * (lo + hi) };
         }
+        self.apply_posture(&mut x);
         x
     }
 }

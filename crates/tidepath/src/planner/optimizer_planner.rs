@@ -22,6 +22,7 @@ impl OptimizerPlanner {
     /// The encoding of every mission of `problem` under this planner's setting.
     pub fn encodings(&self, problem: &Problem<'_>) -> Result<Vec<Box<dyn Encoding>>> {
         let entry = encoding::registry().get(&self.encoding.kind)?.build;
+        let posture = self.encoding.posture()?;
         (0..problem.missions.len())
             .map(|i| {
                 let m = &problem.missions[i];
@@ -32,6 +33,7 @@ impl OptimizerPlanner {
                     bounds: &problem.world.bounds,
                     z_range: problem.z_range(i),
                     axis: self.encoding.axis,
+                    posture,
                 })
             })
             .collect()
