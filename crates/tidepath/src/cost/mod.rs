@@ -3,11 +3,13 @@
 
 pub mod amfa2015;
 pub mod general;
+pub mod ijs2023;
 pub mod lfhh2019;
 pub mod wpa2017;
 
 pub use amfa2015::{Amfa2015Cost, Amfa2015Params};
 pub use general::{GeneralCost, GeneralWeights};
+pub use ijs2023::{Ijs2023Cost, Ijs2023Params};
 pub use lfhh2019::{Lfhh2019Cost, Lfhh2019Params};
 pub use wpa2017::{Wpa2017Cost, Wpa2017Weights};
 
@@ -50,6 +52,14 @@ pub const COST_MODELS: &[Entry<BuildCost>] = &[
         citation: "amfa2015",
         params: Amfa2015Params::SPECS,
         build: amfa2015::build,
+    },
+    Entry {
+        id: "ijs2023",
+        description:
+            "normalised time through the current (vector sum) plus side-current and target penalties, times 10 if the seabed is touched and 10 if an obstacle is (eqs. 15-24)",
+        citation: "ijs2023",
+        params: Ijs2023Params::SPECS,
+        build: ijs2023::build,
     },
 ];
 
