@@ -34,7 +34,8 @@
 //!   [`crate::world::Obstacle::segment_hits`]), the ones the validator makes, in place of the
 //!   paper's grid samples; a moving obstacle is tested where it is while the vehicle flies the
 //!   segment on the clock above. So under the `vector-sum` travel model F_p1 = 1 exactly when
-//!   tidepath's motion check finds no seabed or obstacle on any segment.
+//!   tidepath's motion check finds no seabed or obstacle on any segment (of the polyline: with
+//!   a turning radius tidepath judges the flown curve, which cuts the corners).
 //! - Current, eqs. 23-24. U(θ) = 1.5 sin(θ)^11.15 + sin(θ/3)^3, θ in [0, π] the angle between
 //!   the segment's horizontal direction and the horizontal current at P_i when the vehicle
 //!   leaves it; U = 0 where there is no current or the segment is vertical (or of zero

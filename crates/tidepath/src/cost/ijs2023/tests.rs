@@ -228,6 +228,33 @@ fn the_peak_current_is_cached_per_world() {
     close(peak_current(&model), 0.5);
 }
 
+/// A gridded forecast and a jet: the peak is the hint, and a newer forecast in the same world
+/// (the case of `simulate`) is a new value.
+#[test]
+fn the_peak_of_a_grid_and_a_jet() {
+    use crate::world::current::{CurrentGrid, JetConfig, Magnitude, MeanderingJet};
+    let grid_current = |u0: f64, hot: f64| {
+        let g = crate::world::RegularGrid2::new(0.0, 0.0, 300.0, 300.0, 11, 11, "g").unwrap();
+        let mut u = vec![u0; 121];
+        u[57] = hot;
+        Current::Grid(CurrentGrid::new(g, vec![0.0, 3600.0], vec![u.clone(), u], vec![vec![0.0; 121]; 2], "g").unwrap())
+    };
+    let mut w = open_world();
+    let (s, g) = (Vec3::new(100.0, 100.0, -100.0), Vec3::new(2900.0, 100.0, -100.0));
+    let mission = Mission::new("m", vehicle(1.5, 0.0), s, g, 0.0);
+    let settings = ModelSettings::default();
+    for (u0, hot) in [(0.1, 0.9), (0.2, 0.3), (0.1, 0.9)] {
+        w.current = grid_current(u0, hot);
+        let model = PathModel::new(&w, &mission, &settings);
+        assert_eq!(peak_current(&model), hot);
+        assert_eq!(peak_current(&model), w.current.max_speed_hint(&w.bounds, 0.0));
+    }
+    w.current = Current::Jet(MeanderingJet::new(JetConfig::over(&w.bounds, Magnitude::Fixed(0.75)), "jet").unwrap());
+    let model = PathModel::new(&w, &mission, &settings);
+    close(peak_current(&model), 0.75);
+    close(cost_with("").time_min(&model), 2800.0 / (1.5 + peak_current(&model)));
+}
+
 /// F_p1 = 10 for a path through (or within the safety distance of) a sphere, a full-depth
 /// cylinder (horizontal distance, at any depth) and a box; 1 when it passes clear.
 #[test]
