@@ -2,6 +2,7 @@
 //! OMPL's `PathSimplifier`. The paper-specific ones (Dubins for wpa2017, B-splines with
 //! midpoint insertion for ijs2023, excluding and contracting for amfa2015) join this folder.
 
+pub mod bspline;
 pub mod dubins;
 pub mod repair_smoother;
 pub mod shortcut;
@@ -49,6 +50,13 @@ pub const SMOOTHERS: &[Entry<BuildSmoother>] = &[
         citation: "Dubins 1957; Owen, Beard & McLain 2014; as in wpa2017",
         params: dubins::DubinsParams::SPECS,
         build: |t, prefix| Ok(Box::new(dubins::DubinsSmoother::new(dubins::DubinsParams::from_table(t, prefix)?))),
+    },
+    Entry {
+        id: "bspline",
+        description: "a clamped cubic B-spline with the waypoints and their legs' midpoints as control points, refitted with more midpoints where it hits something (kept if no worse)",
+        citation: "ijs2023 section III-D, eqs. 25-26, Fig. 8 (A11); Elbanhawi et al. 2015",
+        params: bspline::BsplineParams::SPECS,
+        build: |t, prefix| Ok(Box::new(bspline::BsplineSmoother::new(bspline::BsplineParams::from_table(t, prefix)?))),
     },
     Entry {
         id: "exclude",
