@@ -230,22 +230,22 @@ impl Ijs2023Cost {
         (self.params.tmax_factor - 1.0) * reference
     }
 
-    /// Eq. 17's time (s) for a -> b leaving at `t0` at through-water speed `v`, and the
-    /// horizontal current at `a` then.
+    /// Eq. 17's time (s) for a -> b leaving at `t0` at through-water speed `v`, given `ca`,
+    /// the horizontal current at `a` then, and the horizontal current read at `b` (`None` for
+    /// a segment of zero length).
     #[inline]
-    fn segment_time(world: &World, a: Vec3, b: Vec3, t0: f64, v: f64) -> (f64, Vec3) {
-        let current = &world.current;
-        let ca = horizontal_current(current, a, t0);
+    fn segment_time(world: &World, a: Vec3, b: Vec3, t0: f64, v: f64, ca: Vec3) -> (f64, Option<Vec3>) {
         let len = a.distance(b);
         if len == 0.0 {
-            return (0.0, ca);
+            return (0.0, None);
         }
         // The expression of the validator's `vector-sum` model, so the clocks agree bit for bit.
         let d = (b - a) / len;
         let floor = MIN_SPEED_FRACTION * v;
         let va = (d * v + ca).length().max(floor);
-        let vb = (d * v + horizontal_current(current, b, t0 + len / va)).length().max(floor);
-        (len / (2.0 * va) + len / (2.0 * vb), ca)
+        let cb = horizontal_current(&world.current, b, t0 + len / va);
+        let vb = (d * v + cb).length().max(floor);
+        (len / (2.0 * va) + len / (2.0 * vb), Some(cb))
     }
 
     /// Does the last leg `p` -> `goal` leave eq. 14's window?
@@ -278,9 +278,17 @@ impl Ijs2023Cost {
         let mut t = model.departure_time;
         let (mut travel, mut u_sum) = (0.0, 0.0);
         let (mut seabed, mut obstacle) = (false, false);
+        // A current that does not change in time gives P_(i+1) the same velocity at the
+        // estimated and at the actual arrival: read once.
+        let steady = matches!(world.current, Current::None | Current::Uniform(_) | Current::Vortices(_));
+        let mut known: Option<Vec3> = None;
         for (i, w) in points.windows(2).enumerate() {
             let (a, b) = (w[0], w[1]);
-            let (dt, ca) = Self::segment_time(world, a, b, t, model.segment_speed(i));
+            let ca = known.take().unwrap_or_else(|| horizontal_current(&world.current, a, t));
+            let (dt, cb) = Self::segment_time(world, a, b, t, model.segment_speed(i), ca);
+            if steady {
+                known = cb;
+            }
             u_sum += segment_penalty((b - a).truncate(), ca.truncate());
             let t1 = t + dt;
             if !seabed {
@@ -365,7 +373,8 @@ impl CostModel for Ijs2023Cost {
         if !model.validator.motion_at(a, b, t0, v).valid() {
             return None;
         }
-        let (dt, _) = Self::segment_time(model.world, a, b, t0, v);
+        let ca = horizontal_current(&model.world.current, a, t0);
+        let (dt, _) = Self::segment_time(model.world, a, b, t0, v, ca);
         let span = self.time_span(self.time_min(model));
         Some((self.params.w_time * dt / span, t0 + dt))
     }
