@@ -49,6 +49,13 @@
 //! * A stop (wall time, cancel) during an iteration ends it before the evaluation; a budget
 //!   that runs out mid-population updates only the jellyfish that were evaluated.
 //!
+//! Measured on test functions (60,000 evaluations, 30 dimensions, [−5.12, 5.12]): IJS converges
+//! much more slowly than JS on Sphere (about 5e-3 where JS reaches 1e-38) and is behind it on
+//! Rastrigin. Its finest steps are the restricted global move's RL (U − x), whose length
+//! shrinks only linearly with RL = 1 − t/T (so the error falls polynomially, about tenfold per
+//! threefold budget); without that move (`global_share = 0`) Sphere stays near 1. ijs2023
+//! reports IJS only on paths, where it beats JS.
+//!
 //! Random draws, in order: the start as [`Population::initial`] (uniform, warm starts first).
 //! Per iteration, per jellyfish in rank order: an elite draws one uniform (the hybrid's choice)
 //! and D uniforms (U, or the local move's rand(D)); a learner draws the other jellyfish (one

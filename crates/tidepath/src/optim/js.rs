@@ -26,7 +26,9 @@
 //! * **Passive or active (ijs2023 A3).** A jellyfish whose c is below C₀ moves passively when
 //!   rand > 1 − c and actively otherwise, as in the original paper and the authors' code, so
 //!   the share of passive moves shrinks with c(t). ijs2023 prints the test the other way round
-//!   ("1 − C(t) < rand → active"); the baseline follows the original.
+//!   ("1 − C(t) < rand → active"); the baseline follows the original. (The authors' MATLAB
+//!   code tests `rand <= 1 - Ar` with the signed Ar = (1 − t/T)(2 rand − 1), so its passive
+//!   moves are half as frequent; the paper's |c| is used here.)
 //! * **The ocean current's scalars.** "rand(D)" is one U(0, 1) per coordinate; "β rand" is one
 //!   scalar per move, as in the authors' code (`rand(1,nd).*(Best - 3*rand*Meanvl)`), and so is
 //!   the passive move's rand (`0.1*(Ub-Lb)*rand`).
