@@ -154,12 +154,17 @@ impl StepChain {
     /// `v` on plane `k` moved into the window the value `prev` on plane k − 1 allows.
     #[inline]
     pub fn clamp(&self, k: usize, prev: f64, v: f64) -> f64 {
-        let lo = self.lo[k].max(prev - self.step);
-        let hi = self.hi[k].min(prev + self.step);
-        // Never empty when prev came from this chain (module doc); `max` keeps NaN out.
-        let v = if v < lo { lo } else { v };
-        if v > hi {
-            hi
+        // Into plane k's interval first (off the chain from plane to plane), then into the
+        // window prev allows: the same as clamping into the two's intersection, which is never
+        // empty when prev came from this chain (module doc), because then each end of the
+        // window that binds lies inside the interval. Written as selects, which compile to
+        // min/max without branches (the values are random: branches would mispredict).
+        let v = if v < self.lo[k] { self.lo[k] } else { v };
+        let v = if v > self.hi[k] { self.hi[k] } else { v };
+        let (a, b) = (prev - self.step, prev + self.step);
+        let v = if v < a { a } else { v };
+        if v > b {
+            b
         } else {
             v
         }
@@ -167,6 +172,22 @@ impl StepChain {
 
     pub fn step(&self) -> f64 {
         self.step
+    }
+
+    /// Whether the values `v(0), v(1), ..` of the planes already satisfy the chain, so
+    /// [`StepChain::clamp`] would leave each unchanged. No value depends on the one before,
+    /// so unlike clamping this runs without a serial chain (repaired vectors, the common
+    /// case, are decoded without clamping them again).
+    #[inline]
+    pub fn holds(&self, v: impl Fn(usize) -> f64) -> bool {
+        let mut prev = self.start;
+        let mut ok = true;
+        for k in 0..self.lo.len() {
+            let x = v(k);
+            ok &= x >= self.lo[k] && x <= self.hi[k] && (x - prev).abs() <= self.step;
+            prev = x;
+        }
+        ok
     }
 }
 

@@ -219,6 +219,14 @@ impl Encoding for Sliced {
         out.clear();
         out.push(self.start);
         let per = self.waypoint_dim();
+        let holds = |chain: &Option<StepChain>, j: usize| chain.as_ref().is_none_or(|c| c.holds(|k| x[per * k + j]));
+        if holds(&self.lateral, 0) && holds(&self.vertical, 1) {
+            for k in 0..self.stations.len() {
+                out.push(self.waypoint_at(k, &x[per * k..per * k + per]));
+            }
+            out.push(self.goal);
+            return;
+        }
         let (mut lat, mut z) =
             (self.lateral.as_ref().map(StepChain::start), self.vertical.as_ref().map(StepChain::start));
         let mut v = [0.0; 2];
