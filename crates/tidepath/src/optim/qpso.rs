@@ -17,14 +17,14 @@
 //! Readings (not fixed by the papers or by ijs2023, which gives QPSO no parameters):
 //! * **β (the contraction–expansion coefficient) falls linearly from 1.0 to 0.5 over the run**
 //!   (`beta_start`, `beta_end`): the setting Sun et al. recommend for the mbest form (Sun,
-//!   Fang, Wu, Palade & Xu, Evolutionary Computation 20(3), 2012) and ijs2023's "β 1.0 → 0.5
-//!   linearly" (docs/papers/ijs2023.md, Baselines). t/T is the run's progress
-//!   ([`progress`], as FA's schedule reads it): evaluations used over the evaluation budget,
-//!   else iterations completed over the iteration limit, taken at the start of each iteration;
-//!   so the first iteration uses β_start and β reaches β_end at the end of the budget.
+//!   Fang, Wu, Palade & Xu, Evolutionary Computation 20(3), 2012), which docs/papers/ijs2023.md
+//!   (Baselines, A13) chose for ijs2023's baseline, whose paper gives none. t/T is the run's
+//!   progress ([`progress`], as FA's schedule reads it): evaluations used over the evaluation
+//!   budget, else iterations completed over the iteration limit, taken at the start of each
+//!   iteration; so the first iteration uses β_start and β reaches β_end at the end of the budget.
 //! * **One φ per dimension, p = φ pbest + (1 − φ) gbest.** Sun, Feng & Xu 2004 write the
-//!   attractor as (φ₁ pbest + φ₂ gbest)/(φ₁ + φ₂) with two uniforms; the single φ ~ U(0,1) is
-//!   the form of the later QPSO papers and of docs/papers/shared.md.
+//!   attractor as (φ₁ pbest + φ₂ gbest)/(φ₁ + φ₂) with two random weights; the single
+//!   φ ~ U(0,1) is the form of the later QPSO papers and of docs/papers/shared.md.
 //! * **ln(1/u) with u in (0, 1)**: u has 32-bit resolution, (w + 1/2)/2³² for a 32-bit word w
 //!   ([`fill_unit_f64_32`]), so u is never 0 and ln(1/u) is at most 22.9. It is computed as
 //!   −ln u by [`neg_ln`], fdlibm's logarithm without its special cases (below 1 ulp, a pure
@@ -38,7 +38,7 @@
 //! * **Bounds**: a coordinate outside the box is clamped to the bound (QPSO has no velocity to
 //!   reset), then the objective's own repair runs.
 //! * **45 particles** (`population`): ijs2023's Np = 45 for every baseline
-//!   (docs/papers/ijs2023.md, Baselines); Sun et al.'s experiments use 20 to 80.
+//!   (docs/papers/ijs2023.md, Baselines); `population = 40` is the PSO baselines' usual swarm.
 //!
 //! Random draws, in order, all before any particle moves: per iteration, particle by particle,
 //! D values of φ then D of u at 32-bit resolution ([`fill_unit_f64_32`], two per word of the
@@ -86,19 +86,22 @@ impl QpsoParams {
 /// platform's own `ln` may differ in the last bit).
 #[inline(always)]
 pub(crate) fn neg_ln(x: f64) -> f64 {
-    // fdlibm's constants, by their bits.
+    // fdlibm's constants, by their bits: ln 2 in two parts, and Lg1..Lg7 (6.666666666666735130e-01,
+    // 3.999999999940941908e-01, 2.857142874366239149e-01, 2.222219843214978396e-01,
+    // 1.818357216161805012e-01, 1.531383769920937332e-01, 1.479819860511658591e-01).
     const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
     const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
-    const LG1: f64 = f64::from_bits(0x3fe5_5555_5555_5593); // 6.666666666666735130e-01
-    const LG2: f64 = f64::from_bits(0x3fd9_9999_9997_fa04); // 3.999999999940941908e-01
-    const LG3: f64 = f64::from_bits(0x3fd2_4924_9422_9359); // 2.857142874366239149e-01
-    const LG4: f64 = f64::from_bits(0x3fcc_71c5_1d8e_78af); // 2.222219843214978396e-01
-    const LG5: f64 = f64::from_bits(0x3fc7_4664_96cb_03de); // 1.818357216161805012e-01
-    const LG6: f64 = f64::from_bits(0x3fc3_9a09_d078_c69f); // 1.531383769920937332e-01
-    const LG7: f64 = f64::from_bits(0x3fc2_f112_df3e_5244); // 1.479819860511658591e-01
-    const TWO52_BITS: u64 = 0x4330_0000_0000_0000; // 2^52 as a double
-                                                   // x = 2^k m with m in [√2/2, √2): shift the exponent field so that a mantissa at or above
-                                                   // √2 carries into the next power of two (fdlibm's reduction on the high word).
+    const LG1: f64 = f64::from_bits(0x3fe5_5555_5555_5593);
+    const LG2: f64 = f64::from_bits(0x3fd9_9999_9997_fa04);
+    const LG3: f64 = f64::from_bits(0x3fd2_4924_9422_9359);
+    const LG4: f64 = f64::from_bits(0x3fcc_71c5_1d8e_78af);
+    const LG5: f64 = f64::from_bits(0x3fc7_4664_96cb_03de);
+    const LG6: f64 = f64::from_bits(0x3fc3_9a09_d078_c69f);
+    const LG7: f64 = f64::from_bits(0x3fc2_f112_df3e_5244);
+    // 2^52 as a double.
+    const TWO52_BITS: u64 = 0x4330_0000_0000_0000;
+    // x = 2^k m with m in [√2/2, √2): shift the exponent field so that a mantissa at or above
+    // √2 carries into the next power of two (fdlibm's reduction on the high word).
     let ix = x.to_bits().wrapping_add((0x3ff0_0000u64 - 0x3fe6_a09e) << 32);
     // k + 1023 + 2^52 as a double, minus both: k exactly, without an integer conversion.
     let dk = f64::from_bits(TWO52_BITS | (ix >> 52)) - (4_503_599_627_370_496.0 + 1023.0);
