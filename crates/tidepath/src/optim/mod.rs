@@ -16,10 +16,16 @@ pub mod eda_g;
 pub mod fa;
 pub mod functions;
 pub mod ga;
+pub mod hho;
 pub mod histogram;
+pub mod ijs;
+pub mod js;
+pub mod levy;
+pub mod mpa;
 pub mod mwpa;
 pub mod population;
 pub mod pso;
+pub mod qpso;
 pub mod runner;
 #[cfg(test)]
 mod test_support;

@@ -44,6 +44,13 @@ pub const PRESETS: &[Entry<PresetFor>] = &[
         build: amfa2015_vmax_range,
     },
     Entry {
+        id: "ijs2023",
+        description: "ijs2023's baseline setting (section IV): pso (w 0.9 -> 0.4 over 500 iterations, c = 2, v_max = 0.2 x the box width); js, ijs, qpso, hho, mpa keep their published defaults",
+        citation: "Guo, Chen & Pang 2023 (ijs2023), section IV (readings in docs/papers/ijs2023.md A13)",
+        params: &[],
+        build: ijs2023,
+    },
+    Entry {
         id: "lfhh2019",
         description: "lfhh2019's setting (Table 1): lfhh, fhh, fhh-lts, eda-g, ade",
         citation: "Liu et al. 2019 (lfhh2019), Table 1 (readings in docs/papers/lfhh2019.md A7, A9, A14)",
@@ -77,6 +84,12 @@ fn amfa2015_vmax_range(planner: &str) -> Option<toml::Table> {
         "pso" => Some(PsoParams::amfa2015_vmax_range().to_table()),
         other => amfa2015(other),
     }
+}
+
+/// ijs2023 prints no baseline parameters (A13): PSO's standard linearly falling inertia over
+/// the paper's T = 500 iterations.
+fn ijs2023(planner: &str) -> Option<toml::Table> {
+    (planner == "pso").then(|| PsoParams::ijs2023(500).to_table())
 }
 
 /// lfhh2019's Table 1: NP = 200 for all, binNum = S = 100, lambda = 0.08, T = 5, and the

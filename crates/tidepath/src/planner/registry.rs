@@ -15,9 +15,14 @@ use crate::optim::de::{De, DeParams};
 use crate::optim::eda_g::{EdaG, EdaGParams};
 use crate::optim::fa::{Fa, FaParams};
 use crate::optim::ga::{Ga, GaParams};
+use crate::optim::hho::{Hho, HhoParams};
 use crate::optim::histogram::{FhhLtsParams, FhhParams, Histogram, LfhhParams};
+use crate::optim::ijs::{Ijs, IjsParams};
+use crate::optim::js::{Js, JsParams};
+use crate::optim::mpa::{Mpa, MpaParams};
 use crate::optim::mwpa::{Mwpa, MwpaParams};
 use crate::optim::pso::{Pso, PsoParams};
+use crate::optim::qpso::{Qpso, QpsoParams};
 use crate::optim::wpa::{Wpa, WpaParams};
 use crate::optim::Optimizer;
 use crate::registry::{Entry, Registry};
@@ -138,6 +143,41 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
         citation: "amfa2015 (Liu et al. 2015)",
         params: AmfaParams::SPECS,
         build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Amfa::new(AmfaParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "js",
+        description: "artificial jellyfish search: logistic-map start, time control between following the ocean current and passive or active swarm motion, wrap-around bounds, moves kept only when they improve",
+        citation: "Chou & Truong 2021; baseline in ijs2023",
+        params: JsParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Js::new(JsParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "ijs",
+        description: "improved jellyfish search: personal-best memory, by rank an elite third with a hybrid shrinking-random or best-following move, a learning third with jellyfish search's active move, followers in a memory current",
+        citation: "ijs2023 (Guo, Chen & Pang 2023)",
+        params: IjsParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Ijs::new(IjsParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "hho",
+        description: "Harris hawks optimization: perching, soft and hard besieges around the best, rapid dives with Levy flights kept only when they improve",
+        citation: "Heidari et al. 2019; baseline in ijs2023",
+        params: HhoParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Hho::new(HhoParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "mpa",
+        description: "marine predators algorithm: Brownian then Levy moves toward the elite by thirds of the run, fish aggregating devices, greedy marine memory",
+        citation: "Faramarzi et al. 2020; baseline in ijs2023",
+        params: MpaParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Mpa::new(MpaParams::from_table(t, p)?)))),
+    },
+    Entry {
+        id: "qpso",
+        description: "quantum-behaved particle swarm: each coordinate sampled around a random mix of the personal and global best, spread by its distance to the mean personal best; contraction-expansion 1.0 -> 0.5",
+        citation: "Sun, Feng & Xu 2004; baseline in ijs2023",
+        params: QpsoParams::SPECS,
+        build: BuildPlanner::optimizer(|t, p| Ok(Box::new(Qpso::new(QpsoParams::from_table(t, p)?)))),
     },
     Entry {
         id: "lfhh",
