@@ -118,10 +118,18 @@ impl Levy {
         self.step_from(z_u, v)
     }
 
-    /// `out.len()` steps, in order.
+    /// `out.len()` steps, in order: the same values as `out.len()` calls of
+    /// [`Levy::sample`]. The normals of a chunk are drawn first and the steps computed after,
+    /// so the steps' divisions overlap instead of waiting on the generator one by one.
     pub fn fill(&self, rng: &mut Rng, out: &mut [f64]) {
-        for o in out {
-            *o = self.sample(rng);
+        const CHUNK: usize = 32;
+        let mut z = [0.0f64; 2 * CHUNK];
+        for chunk in out.chunks_mut(CHUNK) {
+            let z = &mut z[..2 * chunk.len()];
+            fill_standard_normal(rng, z);
+            for (o, p) in chunk.iter_mut().zip(z.chunks_exact(2)) {
+                *o = self.step_from(p[0], p[1]);
+            }
         }
     }
 }
