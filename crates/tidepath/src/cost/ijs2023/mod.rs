@@ -78,7 +78,7 @@ use crate::params::{Bound, Checked, Range};
 use crate::path::PathModel;
 use crate::scratch::Scratch;
 use crate::validity::MIN_SPEED_FRACTION;
-use crate::world::{Current, World};
+use crate::world::{Current, Obstacle, World};
 
 pub use peak::peak_current;
 
@@ -138,7 +138,10 @@ pub const U_MAX: f64 = 1.626_419_659_928_444_2;
 /// U(θ) of eq. 24, θ in radians in [0, π].
 #[inline]
 pub fn current_penalty(theta: f64) -> f64 {
-    1.5 * theta.sin().max(0.0).powf(11.15) + (theta / 3.0).sin().powi(3)
+    let s = theta.sin().max(0.0);
+    // 0^11.15 = 0: no powf along or against the current.
+    let first = if s > 0.0 { 1.5 * s.powf(11.15) } else { 0.0 };
+    first + (theta / 3.0).sin().powi(3)
 }
 
 /// U for a segment of horizontal extent `h` in the horizontal current `c`: 0 when either is
@@ -273,33 +276,7 @@ impl Ijs2023Cost {
 
     /// The raw quantities of `points` (start and goal included). No allocation.
     pub fn parts(&self, model: &PathModel<'_>, points: &[Vec3]) -> Ijs2023Parts {
-        let world = model.world;
-        let safety = model.vehicle.safety_distance;
-        let mut t = model.departure_time;
-        let (mut travel, mut u_sum) = (0.0, 0.0);
-        let (mut seabed, mut obstacle) = (false, false);
-        // A current that does not change in time gives P_(i+1) the same velocity at the
-        // estimated and at the actual arrival: read once.
-        let steady = matches!(world.current, Current::None | Current::Uniform(_) | Current::Vortices(_));
-        let mut known: Option<Vec3> = None;
-        for (i, w) in points.windows(2).enumerate() {
-            let (a, b) = (w[0], w[1]);
-            let ca = known.take().unwrap_or_else(|| horizontal_current(&world.current, a, t));
-            let (dt, cb) = Self::segment_time(world, a, b, t, model.segment_speed(i), ca);
-            if steady {
-                known = cb;
-            }
-            u_sum += segment_penalty((b - a).truncate(), ca.truncate());
-            let t1 = t + dt;
-            if !seabed {
-                seabed = world.segment_hits_terrain(a, b, safety);
-            }
-            if !obstacle {
-                obstacle = world.obstacles.iter().any(|o| o.segment_hits(a, b, t, t1, safety));
-            }
-            travel += dt;
-            t = t1;
-        }
+        let Walk { travel, u_sum, seabed, obstacle } = walk(model, points);
         let time_min = self.time_min(model);
         let segments = points.len().saturating_sub(1);
         let f_p2 = if segments > 0 { u_sum / (segments as f64 * U_MAX) } else { 0.0 };
@@ -322,6 +299,174 @@ impl Ijs2023Cost {
             target_missed,
         }
     }
+}
+
+/// What the passes along the path gather: ϖ_t, Σ U_i and the two safety tests.
+struct Walk {
+    travel: f64,
+    u_sum: f64,
+    seabed: bool,
+    obstacle: bool,
+}
+
+/// Two passes: the clock (ϖ_t, Σ U_i, and moving obstacles, tested where they are on it),
+/// then the tests that do not depend on it (the seabed, fixed obstacles), which stop once
+/// both have hit: nothing more can change F_p1. Apart, the clock is a tight loop of
+/// arithmetic and the tests' calls do not stall it.
+fn walk(model: &PathModel<'_>, points: &[Vec3]) -> Walk {
+    let world = model.world;
+    let safety = model.vehicle.safety_distance;
+    let obstacles = ObstacleTest::new(world, safety);
+    let (travel, u_sum, mut obstacle) = match world.current {
+        Current::None => {
+            let (travel, hit) = still_clock(model, points, &obstacles);
+            (travel, 0.0, hit)
+        }
+        _ => current_clock(model, points, &obstacles),
+    };
+    let mut seabed = false;
+    // Moving obstacles were tested on the clock.
+    let mut obstacles_done = obstacle || !obstacles.fixed;
+    for w in points.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if !obstacles_done && obstacles.hits_fixed(a, b) {
+            obstacle = true;
+            obstacles_done = true;
+        }
+        if !seabed {
+            seabed = world.segment_hits_terrain(a, b, safety);
+        }
+        if seabed && obstacles_done {
+            break;
+        }
+    }
+    Walk { travel, u_sum, seabed, obstacle }
+}
+
+/// Fixed obstacles whose boxes, grown by the margin, are computed once per evaluation
+/// (at most this many; more fall back to the shapes' own tests).
+const BOXED: usize = 16;
+
+/// The obstacle tests of one evaluation.
+struct ObstacleTest<'a> {
+    world: &'a World,
+    safety: f64,
+    /// All obstacles fixed: the clock plays no part (a fixed obstacle's frame is the world's).
+    fixed: bool,
+    /// For fixed obstacles, at most [`BOXED`]: each shape's box grown by the margin, the
+    /// rejection [`crate::world::Shape::segment_hits`] makes first; `boxed` of them are set.
+    boxes: [(Vec3, Vec3); BOXED],
+    boxed: usize,
+}
+
+impl<'a> ObstacleTest<'a> {
+    fn new(world: &'a World, safety: f64) -> Self {
+        let fixed = world.obstacles.iter().all(Obstacle::is_fixed);
+        let mut boxes = [(Vec3::ZERO, Vec3::ZERO); BOXED];
+        let mut boxed = 0;
+        if fixed && world.obstacles.len() <= BOXED {
+            // The margin as `Shape::segment_hits` grows the box by it.
+            let m = Vec3::splat(if safety > 0.0 { safety } else { 0.0 });
+            for (slot, o) in boxes.iter_mut().zip(&world.obstacles) {
+                let b = o.shape.aabb();
+                *slot = (b.min - m, b.max + m);
+            }
+            boxed = world.obstacles.len();
+        }
+        Self { world, safety, fixed, boxes, boxed }
+    }
+
+    /// Does segment a -> b come within the safety distance of a fixed obstacle (all are)?
+    /// The same answer as each obstacle's `segment_hits`: a segment the grown box rejects is
+    /// one the shape's own test rejects first.
+    #[inline]
+    fn hits_fixed(&self, a: Vec3, b: Vec3) -> bool {
+        let obstacles = &self.world.obstacles;
+        if self.boxed > 0 {
+            self.boxes[..self.boxed]
+                .iter()
+                .zip(obstacles)
+                .any(|(&(lo, hi), o)| !apart(a, b, lo, hi) && o.shape.segment_hits(a, b, self.safety))
+        } else {
+            obstacles.iter().any(|o| o.shape.segment_hits(a, b, self.safety))
+        }
+    }
+
+    /// Does segment a -> b, flown from `ta` to `tb`, come within the safety distance of an
+    /// obstacle (some moving)?
+    #[inline]
+    fn hits_moving(&self, a: Vec3, b: Vec3, ta: f64, tb: f64) -> bool {
+        self.world.obstacles.iter().any(|o| o.segment_hits(a, b, ta, tb, self.safety))
+    }
+}
+
+/// Is the segment a -> b entirely beyond one face of the box `lo`..`hi`? The expression of
+/// the obstacles' own rejection: one branch, and NaN never rejects.
+#[inline(always)]
+fn apart(a: Vec3, b: Vec3, lo: Vec3, hi: Vec3) -> bool {
+    ((a.x < lo.x) & (b.x < lo.x))
+        | ((a.y < lo.y) & (b.y < lo.y))
+        | ((a.z < lo.z) & (b.z < lo.z))
+        | ((a.x > hi.x) & (b.x > hi.x))
+        | ((a.y > hi.y) & (b.y > hi.y))
+        | ((a.z > hi.z) & (b.z > hi.z))
+}
+
+/// The clock in still water (`Current::None`): no current to read, U = 0, and eq. 17's two
+/// speeds are one, |v d| floored (bit for bit the general expression with c = 0). Returns
+/// ϖ_t and whether a moving obstacle was hit (tested on the clock unless all are fixed).
+fn still_clock(model: &PathModel<'_>, points: &[Vec3], obstacles: &ObstacleTest<'_>) -> (f64, bool) {
+    let mut t = model.departure_time;
+    let mut travel = 0.0;
+    let mut hit = false;
+    for (i, w) in points.windows(2).enumerate() {
+        let (a, b) = (w[0], w[1]);
+        let len = a.distance(b);
+        let dt = if len == 0.0 {
+            0.0
+        } else {
+            let v = model.segment_speed(i);
+            let va = ((b - a) / len * v).length().max(MIN_SPEED_FRACTION * v);
+            let half = len / (2.0 * va);
+            half + half
+        };
+        let t1 = t + dt;
+        if !obstacles.fixed && !hit {
+            hit = obstacles.hits_moving(a, b, t, t1);
+        }
+        travel += dt;
+        t = t1;
+    }
+    (travel, hit)
+}
+
+/// The clock in a current: eq. 17 on the vector-sum clock, Σ U(θ_i), and whether a moving
+/// obstacle was hit (tested on the clock unless all are fixed).
+fn current_clock(model: &PathModel<'_>, points: &[Vec3], obstacles: &ObstacleTest<'_>) -> (f64, f64, bool) {
+    let world = model.world;
+    let mut t = model.departure_time;
+    let (mut travel, mut u_sum) = (0.0, 0.0);
+    let mut hit = false;
+    // A current that does not change in time gives P_(i+1) the same velocity at the
+    // estimated and at the actual arrival: read once.
+    let steady = matches!(world.current, Current::None | Current::Uniform(_) | Current::Vortices(_));
+    let mut known: Option<Vec3> = None;
+    for (i, w) in points.windows(2).enumerate() {
+        let (a, b) = (w[0], w[1]);
+        let ca = known.take().unwrap_or_else(|| horizontal_current(&world.current, a, t));
+        let (dt, cb) = Ijs2023Cost::segment_time(world, a, b, t, model.segment_speed(i), ca);
+        if steady {
+            known = cb;
+        }
+        u_sum += segment_penalty((b - a).truncate(), ca.truncate());
+        let t1 = t + dt;
+        if !obstacles.fixed && !hit {
+            hit = obstacles.hits_moving(a, b, t, t1);
+        }
+        travel += dt;
+        t = t1;
+    }
+    (travel, u_sum, hit)
 }
 
 impl CostModel for Ijs2023Cost {
