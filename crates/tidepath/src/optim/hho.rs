@@ -48,11 +48,12 @@
 //! * **Evaluations, as the code counts them, less its repeats.** One iteration evaluates every
 //!   hawk once, as one population (the code's loop top, before it updates the rabbit), plus,
 //!   for each diving hawk, Y, and Z only if Y did not beat X (the code's `else`). F(X) is the
-//!   hawk's recorded cost: the code evaluates X again in each comparison, two evaluations per
-//!   dive that a pure cost cannot change, so they are not spent. The loop-top evaluation does
-//!   re-evaluate the hawks that dived (their costs are already known), as the code does; so
-//!   an iteration costs N + (1 or 2 per diving hawk) evaluations. The Y and Z of a dive are
-//!   evaluated one at a time, in hawk order, before the flock's population evaluation.
+//!   hawk's recorded cost: the code evaluates X again in each comparison (one or two more
+//!   evaluations per dive) though a pure cost cannot change; those are not spent. The
+//!   loop-top evaluation does re-evaluate the hawks that dived (their costs are already
+//!   known), as the code does; so an iteration costs N + (1 or 2 per diving hawk)
+//!   evaluations. The Y and Z of a dive are evaluated one at a time, in hawk order, before the
+//!   flock's population evaluation.
 //! * **The rabbit** is the best position evaluated so far, updated after each population
 //!   evaluation (a dive that is kept is evaluated there again; one that is refused cannot beat
 //!   the rabbit, since it did not beat its hawk). Ties keep the earlier point; NaN never wins.
