@@ -5,6 +5,7 @@
 
 mod amfa2015;
 mod claims;
+mod ijs2023;
 mod lfhh2019;
 mod report;
 mod wpa2017;
@@ -46,6 +47,7 @@ pub fn parts(paper: &str) -> &'static [&'static str] {
     match paper {
         "lfhh2019" => lfhh2019::PARTS,
         "amfa2015" => amfa2015::PARTS,
+        "ijs2023" => ijs2023::PARTS,
         _ => &[],
     }
 }
@@ -139,6 +141,15 @@ pub const PAPERS: &[Paper] = &[
         citation: "Liu et al. 2015 (amfa2015), section 5, Tables 1-4, Figs. 17-18",
         params: &[],
         build: amfa2015::run,
+    },
+    Entry {
+        id: "ijs2023",
+        description: "IJS against JS, QPSO, PSO, HHO and MPA on time-optimal AUV paths over a seamount field, static \
+                      and in a meandering jet at 0.5, 0.8 and 1.2 x the AUV's speed (Tables 1-3, the current \
+                      penalty of Figs. 14-16), and three AUVs arriving together (section IV-C)",
+        citation: "Guo, Chen & Pang 2023 (ijs2023), section IV, Tables 1-3, Figs. 14-17",
+        params: &[],
+        build: ijs2023::run,
     },
 ];
 

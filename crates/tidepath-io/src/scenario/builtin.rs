@@ -128,6 +128,62 @@ pub const BUILTIN: &[Entry<&str>] = &[
         params: &[],
         build: include_str!("../../scenarios/amfa-salish-2.toml"),
     },
+    Entry {
+        id: "ijs-static-1",
+        description: "3-D: ijs2023's static experiment I (Table 1) over a seamount field with radar cylinders, spheres and cubes, 40 points with posture limits, time-optimal",
+        citation: "ijs2023, Table 1 and Fig. 9, on a synthetic seamount field (the paper's DEM is not available)",
+        params: &[],
+        build: include_str!("../../scenarios/ijs-static-1.toml"),
+    },
+    Entry {
+        id: "ijs-static-2",
+        description: "3-D: ijs2023's static experiment II (Fig. 10), same world, another start and goal",
+        citation: "ijs2023, Fig. 10, on a synthetic seamount field",
+        params: &[],
+        build: include_str!("../../scenarios/ijs-static-2.toml"),
+    },
+    Entry {
+        id: "ijs-static-3",
+        description: "3-D: ijs2023's static experiment III (Fig. 11), same world, another start and goal",
+        citation: "ijs2023, Fig. 11, on a synthetic seamount field",
+        params: &[],
+        build: include_str!("../../scenarios/ijs-static-3.toml"),
+    },
+    Entry {
+        id: "ijs-static-4",
+        description: "3-D: ijs2023's static experiment IV (Fig. 12), same world, another start and goal",
+        citation: "ijs2023, Fig. 12, on a synthetic seamount field",
+        params: &[],
+        build: include_str!("../../scenarios/ijs-static-4.toml"),
+    },
+    Entry {
+        id: "ijs-current",
+        description: "3-D: ijs2023's experiment I in a meandering jet at 0.5 x the AUV's speed (Table 2): time plus current-angle penalty",
+        citation: "ijs2023, Table 2 and Fig. 13 (jet: eqs. 27-28), on a synthetic seamount field",
+        params: &[],
+        build: include_str!("../../scenarios/ijs-current.toml"),
+    },
+    Entry {
+        id: "ijs-strong-0.8",
+        description: "3-D: ijs2023's experiment I in a meandering jet at 0.8 x the AUV's speed (Table 3)",
+        citation: "ijs2023, Table 3, on a synthetic seamount field",
+        params: &[],
+        build: include_str!("../../scenarios/ijs-strong-0.8.toml"),
+    },
+    Entry {
+        id: "ijs-strong-1.2",
+        description: "3-D: ijs2023's experiment I in a meandering jet at 1.2 x the AUV's speed (Table 3): the current outruns the AUV",
+        citation: "ijs2023, Table 3, on a synthetic seamount field",
+        params: &[],
+        build: include_str!("../../scenarios/ijs-strong-1.2.toml"),
+    },
+    Entry {
+        id: "ijs-fleet",
+        description: "3-D: ijs2023's fleet (section IV-C): three AUVs from Fig. 17's starts at 0.5-4 knots in a weak jet, one goal, arriving together 100 m apart",
+        citation: "ijs2023, section IV-C and Fig. 17, on a synthetic seamount field (fleet rules chosen: A15)",
+        params: &[],
+        build: include_str!("../../scenarios/ijs-fleet.toml"),
+    },
 ];
 
 pub fn registry() -> Registry<&'static str> {
