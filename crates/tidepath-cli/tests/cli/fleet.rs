@@ -77,3 +77,30 @@ fn fleet_rendezvous_arrives_together_and_eval_confirms_it() {
     assert_eq!(s.status.code(), Some(2), "{err}");
     assert!(err.starts_with("error: vehicle.speed_min: simulate flies every segment at the cruise speed"), "{err}");
 }
+
+/// ijs2023's fleet (section IV-C) planned by IJS with the paper's 45 jellyfish and 500
+/// iterations: the three AUVs arrive within 60 s of each other and never come closer than
+/// 100 m, and `eval` of the written plan confirms both. Then the paper's other acceptance
+/// case: IJS's path through the jet at 0.5 x the AUV's speed, B-spline smoothed, is feasible
+/// and plotted.
+#[test]
+fn ijs_fleet_arrives_together_and_eval_confirms_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = tidepath(&["plan", "ijs-fleet", "--planner", "ijs", "--out", "f.json"], dir.path());
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    assert!(stdout.contains("together within 60 s: kept") && stdout.contains("separation kept"), "{stdout}");
+    let e = tidepath(&["eval", "ijs-fleet", "f.json"], dir.path());
+    let eval = String::from_utf8_lossy(&e.stdout);
+    assert_eq!(e.status.code(), Some(0), "{eval}");
+    assert_eq!(eval.matches("verdict: feasible").count(), 3, "{eval}");
+    assert!(eval.contains("together within 60 s: kept") && eval.contains("separation kept"), "{eval}");
+
+    let o =
+        tidepath(&["plan", "ijs-current", "--planner", "ijs", "--smooth", "bspline", "--plot", "ijs.svg"], dir.path());
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    assert!(stdout.contains("feasible") && stdout.contains("smoothed"), "{stdout}");
+    let svg = std::fs::read_to_string(dir.path().join("ijs.svg")).unwrap();
+    assert!(svg.contains("current at z ="), "the plot draws the current field");
+}
