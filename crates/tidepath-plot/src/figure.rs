@@ -59,6 +59,14 @@ pub struct PlanFigure<'a> {
     /// The planner's search graphs (`plan --graph`, `--plot-graph`), drawn faintly under the
     /// obstacles' outlines and the paths on the plan view; may be empty.
     pub graphs: Vec<PlotGraph<'a>>,
+    /// The path (an index into `paths`) the plan view colours by its speed over ground, with
+    /// a colour bar, when the world has a current and the path's drawn line has a time at
+    /// every point: where the current helps and where it hinders. A single plan's figure sets
+    /// it; a comparison leaves it `None`, so each planner keeps its own colour.
+    pub speed_path: Option<usize>,
+    /// The vehicle's speed through still water (m/s), when it flies at one speed: marked on
+    /// the speed colour bar, the speed over ground where the current neither helps nor hinders.
+    pub still_water_speed: Option<f64>,
 }
 
 impl<'a> PlanFigure<'a> {
@@ -79,6 +87,8 @@ impl<'a> PlanFigure<'a> {
             history_start: None,
             history_per_sample: false,
             graphs: Vec::new(),
+            speed_path: None,
+            still_water_speed: None,
         }
     }
 }
@@ -89,6 +99,7 @@ impl<'a> PlanFigure<'a> {
         let mut fig = Self::new(title, &scenario.world, scenario.start, scenario.goal, scenario.departure_time);
         fig.epoch = scenario.epoch;
         fig.safety_distance = scenario.vehicle.safety_distance;
+        fig.still_water_speed = scenario.vehicle.speed_range.is_none().then_some(scenario.vehicle.speed);
         fig
     }
 }

@@ -237,6 +237,24 @@ pub fn elevation_color(z: f64, z_min: f64, z_max: f64) -> RGBColor {
     }
 }
 
+/// Speed over ground along a path, `lo` to `hi`: pale yellow (slow) through orange to dark
+/// red (fast), apart from the seabed's blues. Quantised to 32 shades so neighbouring segments
+/// share colours and merge into fewer SVG elements.
+pub fn speed_color(v: f64, lo: f64, hi: f64) -> RGBColor {
+    const SPEED: [(f64, [f64; 3]); 5] = [
+        (0.0, [255.0, 241.0, 150.0]),
+        (0.3, [254.0, 196.0, 79.0]),
+        (0.55, [241.0, 121.0, 32.0]),
+        (0.8, [200.0, 40.0, 30.0]),
+        (1.0, [118.0, 0.0, 38.0]),
+    ];
+    let t = if hi > lo { ((v - lo) / (hi - lo)).clamp(0.0, 1.0) } else { 0.5 };
+    ramp(&SPEED, (t * 32.0).round() / 32.0)
+}
+
+/// The dark outline under a path coloured by speed, so it stands out over the seabed.
+pub const SPEED_OUTLINE: RGBColor = RGBColor(25, 20, 20);
+
 fn ramp(stops: &[(f64, [f64; 3])], t: f64) -> RGBColor {
     for w in stops.windows(2) {
         let (t0, c0) = w[0];
@@ -289,6 +307,9 @@ pub enum Swatch {
     Waypoints(RGBColor),
     /// A time tick: a short bar across a line.
     Tick(RGBColor),
+    /// A path coloured along its length (by speed over ground): these colours in turn, with
+    /// a dark outline.
+    Ramp(Vec<RGBColor>),
 }
 
 impl Swatch {
@@ -403,6 +424,14 @@ pub fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, entries: &
             Swatch::Tick(c) => {
                 area.draw(&PathElement::new(vec![(x0, cy), (x1, cy)], line(c.mix(0.6), 2))).map_err(plot_err)?;
                 area.draw(&PathElement::new(vec![(xm, cy - 6), (xm, cy + 6)], line(*c, 2))).map_err(plot_err)?;
+            }
+            Swatch::Ramp(colors) => {
+                area.draw(&PathElement::new(vec![(x0, cy), (x1, cy)], line(SPEED_OUTLINE, 6))).map_err(plot_err)?;
+                let n = colors.len().max(1) as i32;
+                for (k, c) in colors.iter().enumerate() {
+                    let (a, b) = (x0 + (x1 - x0) * k as i32 / n, x0 + (x1 - x0) * (k as i32 + 1) / n);
+                    area.draw(&PathElement::new(vec![(a, cy), (b, cy)], line(*c, 4))).map_err(plot_err)?;
+                }
             }
             Swatch::Waypoints(c) => {
                 for k in 0..3 {

@@ -4,13 +4,15 @@
 //!
 //! Set `TIDEPATH_PLOT_DIR` to also write the SVGs there, to look at them.
 
-// The other figure suites, as modules of this one test binary (one link instead of four).
+// The other figure suites, as modules of this one test binary (one link instead of five).
 #[path = "plot/plot_failures.rs"]
 mod plot_failures;
 #[path = "plot/plot_flown.rs"]
 mod plot_flown;
 #[path = "plot/plot_smoke.rs"]
 mod plot_smoke;
+#[path = "plot/plot_speed.rs"]
+mod plot_speed;
 #[path = "plot/plot_time_ticks.rs"]
 mod plot_time_ticks;
 

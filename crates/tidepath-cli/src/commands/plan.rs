@@ -257,6 +257,9 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
             }
         })
         .collect();
+    // One mission's final path (the smoothed one when smoothed) is coloured by its speed over
+    // ground when the world has a current; a fleet's paths keep a colour each.
+    fig.speed_path = (!several && !owned.is_empty()).then_some(0);
     // The search graph, faintly under everything the run found.
     fig.graphs = report
         .graphs

@@ -9,9 +9,10 @@ use plotters::prelude::*;
 use plotters::style::text_anchor;
 
 use super::super::style::{self, plot_err, LegendEntry, LengthUnit, Swatch};
+use super::colorbar::{self, ColourBar};
 use super::graticule::Graticule;
 use super::overlays::{draw_quiver, quiver_px_per_speed, scale_speed, Quiver, ARROW_CELLS};
-use super::seabed::{draw_colorbar_horizontal, draw_colorbar_vertical, draw_seabed, Seabed};
+use super::seabed::{draw_seabed, Seabed};
 use super::{Chart, MAX_SCALE_ARROW_PX};
 use tidepath::error::Result;
 use tidepath::world::World;
@@ -22,6 +23,8 @@ const TOP_PAD: u32 = 8;
 const RIGHT_PAD: u32 = 16;
 const COLORBAR_W: u32 = 104;
 const COLORBAR_H: u32 = 48;
+/// Pixels between colour bars stacked beside the map.
+const COLORBAR_GAP: u32 = 28;
 
 /// Where the colour bar goes: beside suits tall maps, below suits wide ones.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -41,8 +44,10 @@ pub(crate) struct MapSpec<'a> {
     pub(crate) caption: Option<String>,
     /// Entries of the legend under the map; a current's scale arrow gets its length here.
     pub(crate) legend: Vec<LegendEntry>,
-    /// Whether the seabed's colour bar is drawn (a grid of small maps leaves it to one map).
+    /// Whether the colour bars are drawn (a grid of small maps leaves them to one map).
     pub(crate) colorbar: bool,
+    /// A second colour bar after the seabed's (a path coloured by its speed over ground).
+    pub(crate) extra_bar: Option<ColourBar>,
 }
 
 impl<'a> MapSpec<'a> {
@@ -68,6 +73,7 @@ impl<'a> MapSpec<'a> {
             caption: None,
             legend: Vec::new(),
             colorbar: true,
+            extra_bar: None,
         }
     }
 
@@ -75,6 +81,22 @@ impl<'a> MapSpec<'a> {
     pub(crate) fn unit(&self) -> LengthUnit {
         let (x0, y0, x1, y1) = self.view;
         LengthUnit::for_extent((x1 - x0).max(y1 - y0))
+    }
+
+    /// The colour bars to draw: the seabed's, then the extra one (taken).
+    fn take_bars(&mut self) -> Vec<ColourBar> {
+        if !self.colorbar {
+            return Vec::new();
+        }
+        self.seabed.as_ref().map(Seabed::colour_bar).into_iter().chain(self.extra_bar.take()).collect()
+    }
+
+    fn bar_count(&self) -> u32 {
+        if self.colorbar {
+            u32::from(self.seabed.is_some()) + u32::from(self.extra_bar.is_some())
+        } else {
+            0
+        }
     }
 }
 
@@ -84,7 +106,7 @@ impl<'a> MapSpec<'a> {
 pub(crate) fn map_frame(spec: &MapSpec, w: u32) -> (u32, u32) {
     let legend_h = style::legend_height(&spec.legend, w.saturating_sub(20).max(100));
     let caption_h = if spec.caption.is_some() { style::CAPTION_H } else { 0 };
-    let bar_h = if spec.colorbar && spec.seabed.is_some() { COLORBAR_H } else { 0 };
+    let bar_h = COLORBAR_H * spec.bar_count();
     (Y_LABEL_W + RIGHT_PAD + 4, caption_h + TOP_PAD + X_LABEL_H + 8 + legend_h + bar_h)
 }
 
@@ -112,11 +134,12 @@ pub(crate) fn draw_map<DB: DrawingBackend>(
     let base_w = w.saturating_sub(Y_LABEL_W + RIGHT_PAD + 4);
     let base_h = h.saturating_sub(caption_h + TOP_PAD + X_LABEL_H + 8 + legend_h);
     let fit = |aw: u32, ah: u32| (aw.max(40) as f64 / lx).min(ah.max(40) as f64 / ly);
-    let (bar, scale) = match spec.seabed.as_ref().filter(|_| spec.colorbar) {
-        None => (None, fit(base_w, base_h)),
-        Some(_) => {
+    let n_bars = spec.bar_count();
+    let (bar, scale) = match n_bars {
+        0 => (None, fit(base_w, base_h)),
+        _ => {
             let beside = fit(base_w.saturating_sub(COLORBAR_W), base_h);
-            let below = fit(base_w, base_h.saturating_sub(COLORBAR_H));
+            let below = fit(base_w, base_h.saturating_sub(COLORBAR_H * n_bars));
             if beside >= below {
                 (Some(BarPlace::Beside), beside)
             } else {
@@ -129,7 +152,7 @@ pub(crate) fn draw_map<DB: DrawingBackend>(
     let chart_h = TOP_PAD + plot_h + X_LABEL_H;
     let block_w = chart_w + if bar == Some(BarPlace::Beside) { COLORBAR_W } else { 0 };
     let left = (w.saturating_sub(block_w) / 2) as i32;
-    let legend_top = chart_h + 6 + if bar == Some(BarPlace::Below) { COLORBAR_H } else { 0 };
+    let legend_top = chart_h + 6 + if bar == Some(BarPlace::Below) { COLORBAR_H * n_bars } else { 0 };
 
     let body = match &spec.caption {
         Some(c) => style::caption(area, c)?,
@@ -205,17 +228,24 @@ pub(crate) fn draw_map<DB: DrawingBackend>(
         .draw_series(std::iter::once(Rectangle::new([(x0 / u, y0 / u), (x1 / u, y1 / u)], style::line(BLACK, 1))))
         .map_err(plot_err)?;
 
-    if let (Some(s), Some(place)) = (&spec.seabed, bar) {
-        match place {
-            BarPlace::Beside => {
-                let area = body.clone().shrink((left + chart_w as i32 + 6, TOP_PAD as i32), (COLORBAR_W - 6, plot_h));
-                draw_colorbar_vertical(&area, s)?;
+    // Beside the map the bars share its height; below it, each takes a row.
+    let bars = spec.take_bars();
+    let n = bars.len() as u32;
+    for (k, b) in (0u32..).zip(&bars) {
+        match bar {
+            Some(BarPlace::Beside) => {
+                let bar_h = plot_h.saturating_sub(COLORBAR_GAP * (n - 1)) / n;
+                let top = TOP_PAD + k * (bar_h + COLORBAR_GAP);
+                let area = body.clone().shrink((left + chart_w as i32 + 6, top as i32), (COLORBAR_W - 6, bar_h));
+                colorbar::draw_vertical(&area, b)?;
             }
-            BarPlace::Below => {
+            Some(BarPlace::Below) => {
                 let bar_w = plot_w.saturating_sub(190).clamp(120, 480);
-                let area = body.clone().shrink((left + Y_LABEL_W as i32, chart_h as i32), (bar_w + 200, COLORBAR_H));
-                draw_colorbar_horizontal(&area, s, bar_w)?;
+                let top = chart_h + k * COLORBAR_H;
+                let area = body.clone().shrink((left + Y_LABEL_W as i32, top as i32), (bar_w + 200, COLORBAR_H));
+                colorbar::draw_horizontal(&area, b, bar_w)?;
             }
+            None => {}
         }
     }
     let legend_area = body.shrink((10, legend_top as i32), (legend_w, legend_h.max(1)));

@@ -4,12 +4,14 @@
 //! distances to obstacles), so the plot size is computed (in `map`, which every plan view
 //! shares, the simulation figure's too) from the available area rather than left to plotters.
 
+mod colorbar;
 mod graph;
 mod graticule;
 mod map;
 mod obstacles;
 mod overlays;
 mod seabed;
+mod speed;
 #[cfg(test)]
 mod tests;
 pub(crate) mod time_ticks;
@@ -24,6 +26,7 @@ use super::{failure, time_label, PlanFigure, PlotPath};
 use obstacles::{draw_mark_labels, draw_tracks, mark_times};
 use overlays::{draw_paths, draw_reference, draw_violated_segments, draw_violated_waypoints, scale_speed, Quiver};
 use seabed::Seabed;
+use speed::{draw_speed_path, SpeedPath};
 use tidepath::error::{Error, Result};
 use tidepath::world::{Current, World};
 
@@ -98,6 +101,8 @@ pub fn draw_plan_view<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &P
     let view = view_rect(fig)?;
     let mut spec = MapSpec::new(world, view, time, current_depth(world, paths));
     let marks = mark_times(fig);
+    // In a current, the plan's path coloured by its speed over ground, with its colour bar.
+    let by_speed = SpeedPath::of(fig);
 
     // The scale arrow's length is known once the map is laid out; its legend entry keeps a
     // place as wide as the longest arrow can be and gets its length there.
@@ -106,7 +111,9 @@ pub fn draw_plan_view<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &P
     // thicken the outline); the map is at most the area's width, which decides it before the
     // layout, since the legend says whether it is there.
     let halos = halos_wide(world, fig.safety_distance, view, w);
-    spec.legend = legend_entries(fig, spec.seabed.as_ref(), spec.quiver.as_ref(), !marks.is_empty(), halos);
+    spec.legend =
+        legend_entries(fig, spec.seabed.as_ref(), spec.quiver.as_ref(), !marks.is_empty(), halos, by_speed.as_ref());
+    spec.extra_bar = by_speed.as_ref().map(SpeedPath::colour_bar);
     spec.caption =
         Some(if time_varying(world) { format!("Plan view at {}", shown_at(fig)) } else { "Plan view".to_string() });
     draw_map(area, spec, |chart, u| {
@@ -119,7 +126,11 @@ pub fn draw_plan_view<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &P
         }
         draw_tracks(chart, fig, u, &marks)?;
         draw_violated_segments(chart, paths, u)?;
-        draw_paths(chart, paths, u)?;
+        draw_paths(chart, paths, u, by_speed.as_ref().map(|s| s.index))?;
+        // Over the other paths (a smoothed plan's raw path), which would otherwise hide it.
+        if let Some(s) = &by_speed {
+            draw_speed_path(chart, s, u)?;
+        }
         // Over the paths, dashed: a path that is the reference (an exact planner's) shows through.
         if let Some(r) = &fig.reference {
             draw_reference(chart, r, u)?;
@@ -163,9 +174,18 @@ fn legend_entries(
     quiver: Option<&Quiver>,
     marks: bool,
     halos: bool,
+    by_speed: Option<&SpeedPath>,
 ) -> Vec<LegendEntry> {
     let (world, paths) = (fig.world, fig.paths.as_slice());
-    let mut out: Vec<LegendEntry> = paths.iter().enumerate().flat_map(|(i, p)| path_entries(i, p)).collect();
+    let mut out: Vec<LegendEntry> = Vec::new();
+    for (i, p) in paths.iter().enumerate() {
+        let mut entries = path_entries(i, p);
+        // The coloured path's line (its first entry) says what its colours mean.
+        if let (Some(s), Some(first)) = (by_speed.filter(|s| s.index == i), entries.first_mut()) {
+            *first = s.legend_label(&first.label);
+        }
+        out.extend(entries);
+    }
     if let Some(r) = &fig.reference {
         out.push(LegendEntry::new(&r.label, Swatch::DashedPath(style::REFERENCE)));
     }

@@ -210,7 +210,15 @@ pub(crate) fn draw_focus<DB: DrawingBackend>(chart: &Chart<DB>, fig: &PlanFigure
 /// waypoint; with one, the flown curve is the line and the waypoints are small hollow markers
 /// on a thin dashed line beneath it, so the corners the vehicle cuts show. Flown curves are
 /// drawn over the other paths (a smoothed plan's raw path), which would otherwise hide them.
-pub(super) fn draw_paths<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPath], u: f64) -> Result<()> {
+/// The path `by_speed` (coloured by its speed over ground, drawn apart after the others) gets
+/// only its flown curve's dashed waypoint line here (its rings go over the coloured line), and the others (a smoothed plan's raw path) are
+/// drawn thin beneath it, so its colours stay clear.
+pub(super) fn draw_paths<DB: DrawingBackend>(
+    chart: &Chart<DB>,
+    paths: &[PlotPath],
+    u: f64,
+    by_speed: Option<usize>,
+) -> Result<()> {
     let plot = chart.plotting_area();
     let finite = |pts: &[Vec3]| -> Vec<(f64, f64)> {
         pts.iter().filter(|q| q.x.is_finite() && q.y.is_finite()).map(|q| (q.x / u, q.y / u)).collect()
@@ -222,22 +230,28 @@ pub(super) fn draw_paths<DB: DrawingBackend>(chart: &Chart<DB>, paths: &[PlotPat
             plot.draw(&PathElement::new(waypoints.clone(), style::line(WHITE.mix(0.6), 3))).map_err(plot_err)?;
             plot.draw(&DashedPathElement::new(waypoints.clone(), 5, 4, style::line(color, 1))).map_err(plot_err)?;
         }
+        let speed_coloured = by_speed == Some(i);
+        let thin = by_speed.is_some() && !speed_coloured;
         let pts = finite(drawn.line);
-        if pts.len() >= 2 {
+        if pts.len() >= 2 && !speed_coloured {
             // A pale casing keeps the line readable over dark water and dark contours.
-            plot.draw(&PathElement::new(pts.clone(), style::line(WHITE.mix(0.75), 5))).map_err(plot_err)?;
-            plot.draw(&PathElement::new(pts.clone(), style::line(color, 3))).map_err(plot_err)?;
+            let (casing, width) = if thin { (3, 1) } else { (5, 3) };
+            plot.draw(&PathElement::new(pts.clone(), style::line(WHITE.mix(0.75), casing))).map_err(plot_err)?;
+            plot.draw(&PathElement::new(pts.clone(), style::line(color, width))).map_err(plot_err)?;
         }
         let px: Vec<(i32, i32)> = waypoints.iter().map(|&(x, y)| to_px(chart, x, y)).collect();
         let marked = style::spaced_marks(&px, style::MARK_SPACING_PX);
         for (&q, &mark) in waypoints.iter().zip(&marked) {
             if drawn.flown {
                 // Rings at least a few pixels apart: a tangent polygon's waypoints are dense.
-                if mark {
+                if mark && !speed_coloured {
                     plot.draw(&Circle::new(q, 3, style::fill(WHITE))).map_err(plot_err)?;
                     plot.draw(&Circle::new(q, 3, style::line(color, 1))).map_err(plot_err)?;
                 }
-            } else {
+            } else if thin {
+                plot.draw(&Circle::new(q, 3, style::fill(WHITE))).map_err(plot_err)?;
+                plot.draw(&Circle::new(q, 2, style::fill(color))).map_err(plot_err)?;
+            } else if !speed_coloured {
                 plot.draw(&Circle::new(q, 4, style::fill(WHITE))).map_err(plot_err)?;
                 plot.draw(&Circle::new(q, 3, style::fill(color))).map_err(plot_err)?;
             }

@@ -2,12 +2,11 @@
 
 use std::collections::HashMap;
 
-use plotters::coord::Shift;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::super::contour::{contour_lines, Raster};
 use super::super::style::{self, plot_err};
+use super::colorbar::ColourBar;
 use super::Chart;
 use tidepath::error::Result;
 use tidepath::world::Terrain;
@@ -140,94 +139,19 @@ fn colorbar_ticks(s: &Seabed) -> Vec<f64> {
     ticks
 }
 
-/// How many ticks to skip between labels so labels stay `min_gap` pixels apart on a bar of
-/// `len` pixels.
-fn label_every(s: &Seabed, len: f64, min_gap: f64) -> usize {
-    let span = s.z_max - s.z_min;
-    let px_per_step = if span > 0.0 { len * s.step / span } else { len };
-    (min_gap / px_per_step).ceil().max(1.0) as usize
-}
-
-/// Pixel runs [k0, k1) of one colour along a colour bar `len` pixels long, where pixel k shows
-/// the elevation `z_at((k + 0.5) / len)`; runs keep the bar to a few dozen SVG elements.
-fn gradient_runs(len: u32, z_at: impl Fn(f64) -> f64, s: &Seabed) -> Vec<(i32, i32, RGBColor)> {
-    let n = len.max(2) as i32;
-    let mut runs: Vec<(i32, i32, RGBColor)> = Vec::new();
-    for k in 0..n {
-        let c = style::elevation_color(z_at((k as f64 + 0.5) / n as f64), s.z_min, s.z_max);
-        match runs.last_mut() {
-            Some(last) if last.2 == c => last.1 = k + 1,
-            _ => runs.push((k, k + 1, c)),
+impl Seabed {
+    /// The colour bar of the shading, labelled at the contour levels and the coastline.
+    pub(super) fn colour_bar(&self) -> ColourBar {
+        let (z_min, z_max) = (self.z_min, self.z_max);
+        ColourBar {
+            title: "seabed elevation (m)".to_string(),
+            lo: z_min,
+            hi: z_max,
+            step: self.step,
+            ticks: colorbar_ticks(self),
+            always: Some(0.0),
+            mark: None,
+            colour: Box::new(move |z| style::elevation_color(z, z_min, z_max)),
         }
     }
-    runs
-}
-
-/// Vertical colour bar of the seabed shading, labelled at the contour levels.
-pub(super) fn draw_colorbar_vertical<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, s: &Seabed) -> Result<()> {
-    let (_, h) = area.dim_in_pixel();
-    let (bar_x0, bar_x1) = (0i32, 16i32);
-    let span = s.z_max - s.z_min;
-    let y_of = |z: f64| -> i32 {
-        if span > 0.0 {
-            ((s.z_max - z) / span * (h as f64 - 1.0)).round() as i32
-        } else {
-            h as i32 / 2
-        }
-    };
-    for (k0, k1, c) in gradient_runs(h, |t| s.z_max - span * t, s) {
-        area.draw(&Rectangle::new([(bar_x0, k0), (bar_x1, k1)], style::fill(c))).map_err(plot_err)?;
-    }
-    area.draw(&Rectangle::new([(bar_x0, 0), (bar_x1, h as i32 - 1)], style::line(BLACK, 1))).map_err(plot_err)?;
-    let every = label_every(s, h as f64, 16.0);
-    let label = style::font(style::TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
-    for (k, &z) in colorbar_ticks(s).iter().enumerate() {
-        let y = y_of(z);
-        area.draw(&PathElement::new(vec![(bar_x0, y), (bar_x1 + 3, y)], style::line(BLACK.mix(0.7), 1)))
-            .map_err(plot_err)?;
-        if k % every == 0 || z == 0.0 {
-            area.draw(&Text::new(style::fmt_num(z, s.step), (bar_x1 + 6, y), label.clone())).map_err(plot_err)?;
-        }
-    }
-    let title =
-        style::font(style::AXIS_DESC_PX).pos(Pos::new(HPos::Center, VPos::Center)).transform(FontTransform::Rotate270);
-    area.draw(&Text::new("seabed elevation (m)", (bar_x1 + 70, h as i32 / 2), title)).map_err(plot_err)?;
-    Ok(())
-}
-
-/// Horizontal colour bar `bar_w` pixels long with labels under it and its title to the right.
-pub(super) fn draw_colorbar_horizontal<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    s: &Seabed,
-    bar_w: u32,
-) -> Result<()> {
-    let (bar_y0, bar_y1) = (10i32, 24i32);
-    let span = s.z_max - s.z_min;
-    let x_of = |z: f64| -> i32 {
-        if span > 0.0 {
-            ((z - s.z_min) / span * (bar_w as f64 - 1.0)).round() as i32
-        } else {
-            bar_w as i32 / 2
-        }
-    };
-    for (k0, k1, c) in gradient_runs(bar_w, |t| s.z_min + span * t, s) {
-        area.draw(&Rectangle::new([(k0, bar_y0), (k1, bar_y1)], style::fill(c))).map_err(plot_err)?;
-    }
-    area.draw(&Rectangle::new([(0, bar_y0), (bar_w as i32 - 1, bar_y1)], style::line(BLACK, 1))).map_err(plot_err)?;
-    let ticks = colorbar_ticks(s);
-    let widest = ticks.iter().map(|&z| style::fmt_num(z, s.step).len()).max().unwrap_or(1);
-    let every = label_every(s, bar_w as f64, style::text_width(&"0".repeat(widest), style::TICK_PX) + 10.0);
-    let label = style::font(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-    for (k, &z) in ticks.iter().enumerate() {
-        let x = x_of(z);
-        area.draw(&PathElement::new(vec![(x, bar_y0), (x, bar_y1 + 3)], style::line(BLACK.mix(0.7), 1)))
-            .map_err(plot_err)?;
-        if k % every == 0 || z == 0.0 {
-            area.draw(&Text::new(style::fmt_num(z, s.step), (x, bar_y1 + 5), label.clone())).map_err(plot_err)?;
-        }
-    }
-    let title = style::font(style::AXIS_DESC_PX).pos(Pos::new(HPos::Left, VPos::Center));
-    area.draw(&Text::new("seabed elevation (m)", (bar_w as i32 + 14, (bar_y0 + bar_y1) / 2), title))
-        .map_err(plot_err)?;
-    Ok(())
 }

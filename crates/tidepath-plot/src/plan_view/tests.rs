@@ -1,6 +1,7 @@
 use super::super::contour::Raster;
 use super::seabed::seabed_blocks;
 use super::*;
+use tidepath::geom::Vec3;
 
 #[test]
 fn seabed_blocks_paint_every_cell_its_own_colour() {
@@ -28,4 +29,50 @@ fn seabed_blocks_paint_every_cell_its_own_colour() {
         }
     }
     assert!(blocks.len() < cx * cy / 2, "{} blocks for {} cells", blocks.len(), cx * cy);
+}
+
+#[test]
+fn segment_speeds_are_length_over_time_with_the_vertical() {
+    use super::speed::segment_speeds;
+    let line = [
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(30.0, 0.0, -40.0),
+        Vec3::new(30.0, 0.0, -40.0),
+        Vec3::new(30.0, 10.0, -40.0),
+    ];
+    // 50 m in 25 s, 0 m in 10 s, then a segment of no duration: no speed.
+    let v = segment_speeds(&line, &[0.0, 25.0, 35.0, 35.0]);
+    assert_eq!(v[..2], [2.0, 0.0]);
+    assert!(v[2].is_nan());
+}
+
+#[test]
+fn speed_ticks_are_round_and_labelled_at_their_step() {
+    use super::speed::round_ticks;
+    // A span whose nice step would be 0.25 (labels "1.5, 1.8, 2.0, 2.2") gets 0.2.
+    let (ticks, step) = round_ticks(1.26, 2.31);
+    assert_eq!(step, 0.2);
+    let labels: Vec<String> = ticks.iter().map(|&v| style::fmt_num(v, step)).collect();
+    assert_eq!(labels, ["1.4", "1.6", "1.8", "2.0", "2.2"]);
+    assert!(round_ticks(1.0, 1.0).0.is_empty());
+}
+
+#[test]
+fn a_path_at_one_speed_gets_a_bar_labelled_at_that_speed() {
+    use super::speed::SpeedPath;
+    let line = [Vec3::new(0.0, 0.0, -10.0), Vec3::new(100.0, 0.0, -10.0), Vec3::new(200.0, 0.0, -10.0)];
+    let sp = SpeedPath {
+        index: 0,
+        line: &line,
+        flown: false,
+        waypoints: &line,
+        speeds: vec![1.5, 1.5],
+        lo: 1.5,
+        hi: 1.5,
+        still_water: Some(1.2),
+    };
+    let bar = sp.colour_bar();
+    let labels: Vec<String> = bar.ticks.iter().map(|&v| style::fmt_num(v, bar.step)).collect();
+    assert_eq!(labels, ["1.50"]);
+    assert!(sp.legend_label("p").label.ends_with("(faster throughout than its 1.2 m/s through still water)"));
 }

@@ -109,6 +109,8 @@ fn rich_world_figure_has_all_panels() {
         history_start: None,
         history_per_sample: false,
         graphs: vec![],
+        speed_path: None,
+        still_water_speed: None,
         paths: vec![PlotPath::new("pso", &a), PlotPath::new("straight", &b)],
         histories: vec![("pso".into(), &history)],
     };
@@ -146,6 +148,8 @@ fn bare_world_with_empty_history_and_single_point_path() {
         history_start: None,
         history_per_sample: false,
         graphs: vec![],
+        speed_path: None,
+        still_water_speed: None,
         paths: vec![PlotPath::new("direct", &path), PlotPath::new("one point", &lonely)],
         histories: vec![],
     };
@@ -185,6 +189,8 @@ fn two_d_world_with_uniform_current_and_flat_history() {
         history_start: None,
         history_per_sample: false,
         graphs: vec![],
+        speed_path: None,
+        still_water_speed: None,
         paths: vec![PlotPath::new("de", &path)],
         histories: vec![("de".into(), &flat)],
     };
@@ -238,6 +244,8 @@ fn tall_grid_world_with_many_planners_and_moving_obstacles() {
         history_start: None,
         history_per_sample: false,
         graphs: vec![],
+        speed_path: None,
+        still_water_speed: None,
         paths: paths.iter().zip(names).map(|(p, n)| PlotPath::new(n, p)).collect(),
         histories: histories.iter().zip(names).map(|(h, n)| (n.to_string(), h.as_slice())).collect(),
     };
