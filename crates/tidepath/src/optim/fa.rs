@@ -178,12 +178,7 @@ impl Swarm {
 
     /// `n` fireflies drawn in the box (warm starts first), repaired and evaluated.
     pub fn init(&mut self, n: usize, ctx: &mut Context<'_>) {
-        self.x = Population::initial(n, ctx);
-        for i in 0..n {
-            ctx.repair(self.x.row_mut(i));
-        }
-        self.cost = vec![f64::INFINITY; n];
-        ctx.evaluate_population(&self.x, &mut self.cost);
+        (self.x, self.cost) = Population::initial_evaluated(n, ctx);
         self.order = (0..n).collect();
         self.cand = vec![0.0; ctx.dim()];
         self.u = vec![0.0; ctx.dim()];

@@ -313,12 +313,7 @@ impl Optimizer for Hho {
 
     fn init(&mut self, ctx: &mut Context<'_>) {
         let (n, dim) = (self.params.population, ctx.dim());
-        self.x = Population::initial(n, ctx);
-        for i in 0..n {
-            ctx.repair(self.x.row_mut(i));
-        }
-        self.cost = vec![f64::INFINITY; n];
-        ctx.evaluate_population(&self.x, &mut self.cost);
+        (self.x, self.cost) = Population::initial_evaluated(n, ctx);
         self.next = Population::zeros(n, dim);
         self.z = Population::zeros(n, dim);
         self.diving = vec![false; n];

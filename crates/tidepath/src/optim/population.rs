@@ -43,6 +43,18 @@ impl Population {
         pop
     }
 
+    /// [`Population::initial`] with every row repaired by the objective, and its costs: how
+    /// most optimizers start. (Repairs end with the run's clock: [`Context::repair`].)
+    pub fn initial_evaluated(size: usize, ctx: &mut Context<'_>) -> (Self, Vec<f64>) {
+        let mut pop = Self::initial(size, ctx);
+        for i in 0..size {
+            ctx.repair(pop.row_mut(i));
+        }
+        let mut cost = vec![f64::INFINITY; size];
+        ctx.evaluate_population(&pop, &mut cost);
+        (pop, cost)
+    }
+
     pub fn dim(&self) -> usize {
         self.dim
     }

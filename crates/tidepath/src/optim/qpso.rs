@@ -270,12 +270,7 @@ impl Optimizer for Qpso {
     fn init(&mut self, ctx: &mut Context<'_>) {
         let n = self.params.population;
         let dim = ctx.dim();
-        self.x = Population::initial(n, ctx);
-        for i in 0..n {
-            ctx.repair(self.x.row_mut(i));
-        }
-        self.cost = vec![f64::INFINITY; n];
-        ctx.evaluate_population(&self.x, &mut self.cost);
+        (self.x, self.cost) = Population::initial_evaluated(n, ctx);
         self.pbest = self.x.clone();
         self.pbest_cost = self.cost.iter().map(|&c| if c.is_nan() { f64::INFINITY } else { c }).collect();
         self.mbest = vec![0.0; dim];
