@@ -38,6 +38,8 @@ pub enum RangeKind {
 #[derive(Args)]
 pub struct FunctionsArgs {
     /// Comma-separated optimizer ids; the first is the reference for the rank-sum marks.
+    /// Optimizers: pso, ga, de, wpa, mwpa, fa, amfa, js, ijs, qpso, hho, mpa, lfhh, fhh,
+    /// fhh-lts, eda-g, ade (`tidepath planners` describes them).
     #[arg(long, value_delimiter = ',', required = true)]
     pub algos: Vec<String>,
     /// Comma-separated functions: sphere, rosenbrock, rastrigin, griewank, ackley, zakharov, easom, trid, quadric.

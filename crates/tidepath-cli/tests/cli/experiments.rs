@@ -92,6 +92,40 @@ fn unknown_reference_planners_are_refused_naming_the_flag() {
     }
 }
 
+/// `bench functions --help` names every optimizer of the planner table, so a new one cannot
+/// be left out of the list; and each runs there.
+#[test]
+fn bench_functions_lists_and_runs_every_optimizer() {
+    let help = String::from_utf8_lossy(&tidepath(&["bench", "functions", "--help"]).stdout).to_string();
+    let flat = help.split_whitespace().collect::<Vec<_>>().join(" ");
+    let optimizers: Vec<&str> =
+        tidepath::planner::registry().entries().iter().filter(|e| e.build.is_optimizer()).map(|e| e.id).collect();
+    for id in &optimizers {
+        assert!(flat.contains(&format!(" {id},")) || flat.contains(&format!(" {id} (")), "{id} missing from: {flat}");
+    }
+    for id in ["js", "ijs", "qpso", "hho", "mpa"] {
+        assert!(optimizers.contains(&id), "{id}");
+    }
+    let algos = optimizers.join(",");
+    let o = tidepath(&[
+        "bench",
+        "functions",
+        "--algos",
+        &algos,
+        "--funcs",
+        "sphere",
+        "--dim",
+        "5",
+        "--runs",
+        "2",
+        "--evaluations",
+        "500",
+    ]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(stdout.lines().filter(|l| l.starts_with("| sphere-d5-standard")).count(), optimizers.len(), "{stdout}");
+}
+
 #[test]
 fn bench_functions_reports_sphere_near_zero() {
     let o = tidepath(&[
