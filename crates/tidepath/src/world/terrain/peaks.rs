@@ -159,6 +159,45 @@ impl GaussianPeaks {
         }
     }
 
+    /// An upper bound of [`GaussianPeaks::max_in`]'s value as it computes it, without exp, to
+    /// reject far segments before it. Each bump's exp(-e) (the same e, bit for bit) is bounded
+    /// by 1 / (1 + e + e^2/2 + e^3/6 + e^4/24), the Taylor polynomial of exp(e) being below it,
+    /// times 1 + 1e-9 (the roundings of the polynomial and of exp are about 1e-15); each dip's
+    /// term by 0, as it is never positive. Rounding is monotone, so the sum of these larger
+    /// terms is never below the sum `max_in` makes. NaN (no bound) where `max_in` could meet a
+    /// NaN or an infinite dip. Above it by at most 1.15 % of each bump's height (near e = 3.3;
+    /// 0.14 % at e = 1, 1e-5 at e = 40).
+    #[inline]
+    pub(super) fn max_in_upper(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> f64 {
+        let mut z = self.base;
+        for p in &self.peaks {
+            if p.height >= 0.0 {
+                let dx = (x0 - p.x).max(p.x - x1).max(0.0);
+                let dy = (y0 - p.y).max(p.y - y1).max(0.0);
+                let u = dx / p.sigma_x;
+                let v = dy / p.sigma_y;
+                let e = u * u + v * v;
+                // As `Peak::term`: beyond FAR_EXPONENT the term is 0 (skipped); a NaN e stays NaN.
+                if e <= FAR_EXPONENT || e.is_nan() {
+                    let d = 1.0 + e * (1.0 + e * (0.5 + e * (1.0 / 6.0 + e * (1.0 / 24.0))));
+                    z += p.height * ((1.0 + 1e-9) / d);
+                }
+            } else {
+                let dx = (x0 - p.x).abs().max((x1 - p.x).abs());
+                let dy = (y0 - p.y).abs().max((y1 - p.y).abs());
+                let u = dx / p.sigma_x;
+                let v = dy / p.sigma_y;
+                if (u * u + v * v).is_nan() || !p.height.is_finite() {
+                    return f64::NAN;
+                }
+            }
+        }
+        match self.ceiling {
+            Some(c) => z.min(c),
+            None => z,
+        }
+    }
+
     /// Lower bound over a rectangle: each peak at the point of the rectangle where it is
     /// lowest (the farthest for a positive peak, the nearest for a negative one); the ceiling
     /// only caps, so min(bound, ceiling) stays a lower bound.

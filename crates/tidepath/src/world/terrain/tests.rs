@@ -293,3 +293,63 @@ fn cells_take_reversed_and_nan_rectangles_without_panic() {
         let _ = t.exact_min_clearance(Vec3::new(v, 0.0, -1.0), Vec3::new(1.0, v, -1.0), 0.0, 1.0);
     }
 }
+
+/// The exp-free bound of peaks is never below `max_elevation_in` as computed (rectangles from
+/// points to the whole field, near and far, bumps and dips, with and without a ceiling), and
+/// at most 1.15 % of a bump's height above it; other terrains have none.
+#[test]
+fn the_peaks_upper_bound_is_never_below_the_exact_one() {
+    let mut rng = ChaCha8Rng::seed_from_u64(23);
+    let mut checked = 0;
+    for case in 0..60 {
+        let peaks = (0..rng.random_range(1..7))
+            .map(|_| Peak {
+                x: rng.random_range(0.0..1000.0),
+                y: rng.random_range(0.0..1000.0),
+                height: if case % 3 == 0 { rng.random_range(-400.0..400.0) } else { rng.random_range(0.0..6000.0) },
+                sigma_x: rng.random_range(5.0..400.0),
+                sigma_y: rng.random_range(5.0..400.0),
+            })
+            .collect();
+        let ceiling = (case % 4 == 1).then(|| rng.random_range(-300.0..0.0));
+        let t = Terrain::Peaks(GaussianPeaks { base: -6200.0, peaks, ceiling });
+        for _ in 0..2000 {
+            let (x0, y0) = (rng.random_range(-3000.0..4000.0), rng.random_range(-3000.0..4000.0));
+            let size = match rng.random_range(0..4) {
+                0 => 0.0,
+                1 => rng.random_range(0.0..1.0),
+                2 => rng.random_range(0.0..100.0),
+                _ => rng.random_range(0.0..5000.0),
+            };
+            let (x1, y1) = (x0 + size * rng.random_range(0.0..1.0), y0 + size * rng.random_range(0.0..1.0));
+            let exact = t.max_elevation_in(x0, y0, x1, y1);
+            let upper = t.max_elevation_upper(x0, y0, x1, y1).unwrap();
+            assert!(upper >= exact, "{upper} < {exact} on [{x0}, {x1}] x [{y0}, {y1}], {t:?}");
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 120_000);
+    // One 6000 m bump: at most 1.15 % of its height above (the worst, near e = 3.3), 0.05 m
+    // at e = 40; at its summit exactly 1 + 1e-9 times the height.
+    let t = Terrain::Peaks(GaussianPeaks {
+        base: -6000.0,
+        peaks: vec![Peak { x: 0.0, y: 0.0, height: 6000.0, sigma_x: 100.0, sigma_y: 100.0 }],
+        ceiling: None,
+    });
+    let gap =
+        |x: f64| t.max_elevation_upper(x, 0.0, x + 10.0, 10.0).unwrap() - t.max_elevation_in(x, 0.0, x + 10.0, 10.0);
+    for k in 0..=800 {
+        let g = gap(k as f64);
+        assert!((0.0..0.0115 * 6000.0).contains(&g), "{k}: {g}");
+    }
+    assert!((0.0..0.06).contains(&gap(100.0 * 40f64.sqrt())));
+    assert_eq!(t.max_elevation_upper(-1.0, -1.0, 1.0, 1.0).unwrap(), -6000.0 + 6000.0 * (1.0 + 1e-9));
+    // No bound where max_in could meet a NaN.
+    let t = Terrain::Peaks(GaussianPeaks {
+        base: -100.0,
+        peaks: vec![Peak { x: 0.0, y: 0.0, height: f64::NAN, sigma_x: 1.0, sigma_y: 1.0 }],
+        ceiling: None,
+    });
+    assert!(t.max_elevation_upper(0.0, 0.0, 1.0, 1.0).unwrap().is_nan());
+    assert_eq!(small_grid().max_elevation_upper(0.0, 0.0, 1.0, 1.0), None);
+}
