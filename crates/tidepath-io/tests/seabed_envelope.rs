@@ -53,8 +53,14 @@ fn feasible_plans_of_the_geographic_builtins_clear_the_files_own_seabed() {
     let (name, bytes) = EMBEDDED.iter().find(|(n, _)| *n == "salish_topobathy.nc").unwrap();
     let file = read_bathymetry(&DataFile::Embedded { name, bytes }, None, None, None, 1).unwrap();
     assert!(file.values.iter().all(|v| v.is_finite()), "the shipped file has no fill values");
-    let geographic: Vec<&str> =
-        builtin_names().filter(|n| builtin(n).unwrap().contains("frame = \"geographic\"")).collect();
+    // The geographic built-ins on the file's seabed (ijs2023's are geographic over synthetic
+    // seamounts, which have no file to check against).
+    let geographic: Vec<&str> = builtin_names()
+        .filter(|n| {
+            let text = builtin(n).unwrap();
+            text.contains("frame = \"geographic\"") && text.contains("salish_topobathy.nc")
+        })
+        .collect();
     assert_eq!(
         geographic,
         [

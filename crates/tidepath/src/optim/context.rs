@@ -233,8 +233,11 @@ impl<'a> Context<'a> {
             out.fill(f64::INFINITY);
             return;
         }
-        let pooled =
-            self.parallel && budget > 1 && self.row_ns.is_none_or(|ns| ns * budget as f64 >= PARALLEL_MIN_WORK_NS);
+        // One worker thread: the pool would only hand the rows back and forth.
+        let pooled = self.parallel
+            && budget > 1
+            && rayon::current_num_threads() > 1
+            && self.row_ns.is_none_or(|ns| ns * budget as f64 >= PARALLEL_MIN_WORK_NS);
         let started = self.parallel.then(std::time::Instant::now);
         let n = if pooled {
             // Each worker polls before each row; a row skipped after a stop is marked.

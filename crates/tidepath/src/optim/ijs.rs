@@ -314,5 +314,4 @@ impl Optimizer for Ijs {
 }
 
 #[cfg(test)]
-#[path = "ijs_tests.rs"]
 mod tests;

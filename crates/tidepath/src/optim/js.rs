@@ -352,5 +352,4 @@ impl Optimizer for Js {
 }
 
 #[cfg(test)]
-#[path = "js_tests.rs"]
 mod tests;
