@@ -62,16 +62,17 @@
 //!
 //! Random draws, in order, per hawk: E₀; with |E| ≥ 1, q, then the hawk index and r₁, r₂ (or
 //! r₃, r₄); with |E| < 1, r and r₅ (J; drawn in every exploitation case so the count depends on
-//! the case only), then for a dive S (D uniforms at 32-bit resolution, [`fill_unit_f64_32`])
-//! and LF (D Lévy steps, two normals each). All of an iteration's numbers are drawn before any
-//! of its evaluations; dives are evaluated with [`Context::evaluate`] (one at a time, in hawk
-//! order) and the flock with [`Context::evaluate_population`], so results do not depend on
-//! the thread count.
+//! the case only), then for a dive S (D uniforms at 32-bit resolution, [`fill_unit_f64_32`]).
+//! Then the dives, one at a time in hawk order with [`Context::evaluate`]: a hawk whose Y fails
+//! draws LF (D Lévy steps, two normals each) for its Z then (most of a dive's random numbers,
+//! so a Y that succeeds costs none of them). The flock is evaluated with
+//! [`Context::evaluate_population`]; nothing random is drawn during a parallel evaluation, so
+//! results do not depend on the thread count.
 
 use rand::Rng as _;
 
 use super::fa::progress;
-use super::levy::Levy;
+use super::levy::{fill_standard_normal, Levy};
 use super::MAX_POPULATION;
 use super::{Context, Optimizer, Population};
 use crate::params::{Bound, Checked, Range};
@@ -130,8 +131,19 @@ pub(crate) fn hard_besiege(rabbit: &[f64], x: &[f64], e: f64, out: &mut [f64]) {
     }
 }
 
-/// The two candidates of a rapid dive: `y = X_rabbit − E |J X_rabbit − base|` (eq. 7 with
-/// `base` = X, soft; eq. 12 with `base` = X_m, hard) and `z = y + S ⊙ LF` (eqs. 8 and 13).
+/// The first candidate of a rapid dive, `y = X_rabbit − E |J X_rabbit − base|` (eq. 7 with
+/// `base` = X, soft; eq. 12 with `base` = X_m, hard). The second, `z = y + S ⊙ LF` (eqs. 8
+/// and 13), is built in `Hho::dives` only when `y` fails.
+#[inline]
+pub(crate) fn dive_y(rabbit: &[f64], base: &[f64], e: f64, j: f64, y: &mut [f64]) {
+    for ((yo, &b), &v) in y.iter_mut().zip(rabbit).zip(base) {
+        *yo = b - e * (j * b - v).abs();
+    }
+}
+
+/// Both candidates of a rapid dive at once, `y` as [`dive_y`] and `z = y + S ⊙ LF`: the
+/// tests' replay of an iteration.
+#[cfg(test)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn dive(rabbit: &[f64], base: &[f64], e: f64, j: f64, s: &[f64], lf: &[f64], y: &mut [f64], z: &mut [f64]) {
     let sources = rabbit.iter().zip(base).zip(s.iter().zip(lf));
@@ -173,14 +185,14 @@ pub struct Hho {
     cost: Vec<f64>,
     /// X(t + 1) as it is built; for a diving hawk, Y until its dive is decided.
     next: Population,
-    /// Each diving hawk's Z (other rows unused).
+    /// Each diving hawk's S (eq. 10's random vector; other rows unused).
     z: Population,
+    /// The standard normals (z_u, v) of one Z's Lévy steps, in pairs.
+    normals: Vec<f64>,
     diving: Vec<bool>,
     rabbit: Vec<f64>,
     rabbit_cost: f64,
     mean: Vec<f64>,
-    s: Vec<f64>,
-    lf: Vec<f64>,
     cand: Vec<f64>,
     /// Iterations completed, for the iteration-based progress.
     iteration: u64,
@@ -196,12 +208,11 @@ impl Hho {
             cost: Vec::new(),
             next: Population::zeros(0, 0),
             z: Population::zeros(0, 0),
+            normals: Vec::new(),
             diving: Vec::new(),
             rabbit: Vec::new(),
             rabbit_cost: f64::INFINITY,
             mean: Vec::new(),
-            s: Vec::new(),
-            lf: Vec::new(),
             cand: Vec::new(),
             iteration: 0,
         }
@@ -221,8 +232,8 @@ impl Hho {
         }
     }
 
-    /// Draws every random number of the iteration and builds each hawk's move into `next`
-    /// (a diving hawk's Y there and its Z in `z`); evaluates nothing.
+    /// Draws the iteration's random numbers but the dives' Lévy steps and builds each hawk's
+    /// move into `next` (a diving hawk's Y there and its S in `z`); evaluates nothing.
     fn moves(&mut self, ctx: &mut Context<'_>, e1: f64) {
         let n = self.x.len();
         mean_into(&self.x, &mut self.mean);
@@ -252,10 +263,11 @@ impl Hho {
                 }
                 continue;
             }
-            fill_unit_f64_32(rng, &mut self.s);
-            self.levy.fill(rng, &mut self.lf);
+            // S is drawn now; the Lévy steps' normals (2 D of them, most of a dive's random
+            // numbers) only for a Z that is evaluated, when Y fails (`dives`).
+            fill_unit_f64_32(rng, self.z.row_mut(i));
             let base = if e.abs() >= 0.5 { self.x.row(i) } else { &self.mean[..] };
-            dive(&self.rabbit, base, e, j, &self.s, &self.lf, self.next.row_mut(i), self.z.row_mut(i));
+            dive_y(&self.rabbit, base, e, j, self.next.row_mut(i));
             self.diving[i] = true;
         }
     }
@@ -290,7 +302,13 @@ impl Hho {
                 }
                 stopped = ctx.exhausted();
                 if !stopped {
-                    self.cand.copy_from_slice(self.z.row(i));
+                    // Z = Y + S ⊙ LF (eq. 10), from Y before its repair; LF's normals drawn
+                    // here, in dive order (dives run one after another: deterministic).
+                    fill_standard_normal(ctx.rng(), &mut self.normals);
+                    let (y, s) = (self.next.row(i), self.z.row(i));
+                    for (((c, &y), &s), p) in self.cand.iter_mut().zip(y).zip(s).zip(self.normals.chunks_exact(2)) {
+                        *c = y + s * self.levy.step_from(p[0], p[1]);
+                    }
                     if self.try_dive(ctx, i) {
                         self.next.row_mut(i).copy_from_slice(&self.cand);
                         continue;
@@ -316,12 +334,11 @@ impl Optimizer for Hho {
         (self.x, self.cost) = Population::initial_evaluated(n, ctx);
         self.next = Population::zeros(n, dim);
         self.z = Population::zeros(n, dim);
+        self.normals = vec![0.0; 2 * dim];
         self.diving = vec![false; n];
         self.rabbit = self.x.row(0).to_vec();
         self.rabbit_cost = f64::INFINITY;
         self.mean = vec![0.0; dim];
-        self.s = vec![0.0; dim];
-        self.lf = vec![0.0; dim];
         self.cand = vec![0.0; dim];
         self.iteration = 0;
         self.update_rabbit();
@@ -444,90 +461,100 @@ mod tests {
     fn iterations_match_a_replay_of_the_branches() {
         let (dim, n, lo, hi) = (4, 12, -3.0, 3.0);
         let obj = FunctionObjective::new(Function::Sphere, dim, lo, hi);
-        let mut opt = hho(HhoParams { population: n, ..HhoParams::default() });
-        let mut rng = run_rng(21, 0);
-        // An iteration limit of 4: t/T = 0, 1/4, 2/4, 3/4 in the four iterations.
-        let t = Termination::iterations(4);
-        let mut ctx = Context::new(&obj, &mut rng, None, false, &[]).with_termination(&t);
-        opt.init(&mut ctx);
-        assert_eq!(ctx.evaluations(), n as u64);
-        let levy = Levy::new(1.5, 0.01);
+        // The authors' code's Lévy scale (1): Z then differs enough from Y to be kept at times.
+        let levy = Levy::new(1.5, 1.0);
         let clamp = |v: &mut Vec<f64>| v.iter_mut().for_each(|w| *w = w.clamp(lo, hi));
         let mut seen = [0usize; 6];
-        for it in 0..4u64 {
-            let (x0, rabbit) = (opt.x.clone(), opt.rabbit.clone());
-            let mut mean = vec![0.0; dim];
-            mean_into(&x0, &mut mean);
-            let mut twin = ctx.rng().clone();
-            let e1 = 2.0 * (1.0 - it as f64 / 4.0);
-            // Per hawk: the moved position, or a dive's (Y, Z).
-            let mut want: Vec<(Vec<f64>, Option<Vec<f64>>)> = Vec::new();
-            for i in 0..n {
-                let e = e1 * (2.0 * twin.random::<f64>() - 1.0);
-                let mut a = vec![0.0; dim];
-                if e.abs() >= 1.0 {
-                    if twin.random::<f64>() >= 0.5 {
-                        let k = twin.random_range(0..n);
-                        let (r1, r2): (f64, f64) = (twin.random(), twin.random());
-                        perch_on_family(x0.row(k), x0.row(i), r1, r2, &mut a);
-                        seen[0] += 1;
-                    } else {
-                        let (r3, r4): (f64, f64) = (twin.random(), twin.random());
-                        perch_on_tree(&rabbit, &mean, r3, r4, &[lo; 4], &[hi; 4], &mut a);
-                        seen[1] += 1;
-                    }
-                    clamp(&mut a);
-                    want.push((a, None));
-                    continue;
-                }
-                let r: f64 = twin.random();
-                let j = 2.0 * (1.0 - twin.random::<f64>());
-                if r >= 0.5 {
-                    if e.abs() >= 0.5 {
-                        soft_besiege(&rabbit, x0.row(i), e, j, &mut a);
-                        seen[2] += 1;
-                    } else {
-                        hard_besiege(&rabbit, x0.row(i), e, &mut a);
-                        seen[3] += 1;
-                    }
-                    clamp(&mut a);
-                    want.push((a, None));
-                    continue;
-                }
-                let (mut s, mut lf, mut z) = (vec![0.0; dim], vec![0.0; dim], vec![0.0; dim]);
-                fill_unit_f64_32(&mut twin, &mut s);
-                levy.fill(&mut twin, &mut lf);
-                let base = if e.abs() >= 0.5 { x0.row(i).to_vec() } else { mean.clone() };
-                seen[if e.abs() >= 0.5 { 4 } else { 5 }] += 1;
-                dive(&rabbit, &base, e, j, &s, &lf, &mut a, &mut z);
-                clamp(&mut a);
-                clamp(&mut z);
-                want.push((a, Some(z)));
-            }
-            let before = ctx.evaluations();
-            opt.step(&mut ctx);
-            let spent = ctx.evaluations() - before;
-            let dives = want.iter().filter(|w| w.1.is_some()).count() as u64;
-            assert!(spent >= n as u64 + dives && spent <= n as u64 + 2 * dives, "{it}: {spent} for {dives} dives");
-            for (i, (a, z)) in want.iter().enumerate() {
-                let got = opt.x.row(i);
-                match z {
-                    None => assert_eq!(got, &a[..], "iteration {it}, hawk {i}"),
-                    Some(z) => {
-                        assert!(got == &a[..] || got == &z[..] || got == x0.row(i), "iteration {it}, hawk {i}");
-                        // Kept only when it beats the hawk's old cost.
-                        if got != x0.row(i) {
-                            assert!(Function::Sphere.value(got) < Function::Sphere.value(x0.row(i)));
+        // Dives whose Z was evaluated: [Z failed too, Z kept].
+        let mut zs = [0usize; 2];
+        for seed in 21..31 {
+            let mut opt = hho(HhoParams { population: n, levy_scale: 1.0, ..HhoParams::default() });
+            let mut rng = run_rng(seed, 0);
+            // An iteration limit of 4: t/T = 0, 1/4, 2/4, 3/4 in the four iterations.
+            let t = Termination::iterations(4);
+            let mut ctx = Context::new(&obj, &mut rng, None, false, &[]).with_termination(&t);
+            opt.init(&mut ctx);
+            assert_eq!(ctx.evaluations(), n as u64);
+            for it in 0..4u64 {
+                let (x0, rabbit) = (opt.x.clone(), opt.rabbit.clone());
+                let mut mean = vec![0.0; dim];
+                mean_into(&x0, &mut mean);
+                let mut twin = ctx.rng().clone();
+                let e1 = 2.0 * (1.0 - it as f64 / 4.0);
+                // Per hawk: its next position; per diving hawk: (index, Y before repair, S).
+                let mut want: Vec<Vec<f64>> = Vec::new();
+                let mut dives: Vec<(usize, Vec<f64>, Vec<f64>)> = Vec::new();
+                for i in 0..n {
+                    let e = e1 * (2.0 * twin.random::<f64>() - 1.0);
+                    let mut a = vec![0.0; dim];
+                    if e.abs() >= 1.0 {
+                        if twin.random::<f64>() >= 0.5 {
+                            let k = twin.random_range(0..n);
+                            let (r1, r2): (f64, f64) = (twin.random(), twin.random());
+                            perch_on_family(x0.row(k), x0.row(i), r1, r2, &mut a);
+                            seen[0] += 1;
+                        } else {
+                            let (r3, r4): (f64, f64) = (twin.random(), twin.random());
+                            perch_on_tree(&rabbit, &mean, r3, r4, &[lo; 4], &[hi; 4], &mut a);
+                            seen[1] += 1;
                         }
+                        clamp(&mut a);
+                        want.push(a);
+                        continue;
                     }
+                    let r: f64 = twin.random();
+                    let j = 2.0 * (1.0 - twin.random::<f64>());
+                    if r >= 0.5 {
+                        if e.abs() >= 0.5 {
+                            soft_besiege(&rabbit, x0.row(i), e, j, &mut a);
+                            seen[2] += 1;
+                        } else {
+                            hard_besiege(&rabbit, x0.row(i), e, &mut a);
+                            seen[3] += 1;
+                        }
+                        clamp(&mut a);
+                        want.push(a);
+                        continue;
+                    }
+                    let mut s = vec![0.0; dim];
+                    fill_unit_f64_32(&mut twin, &mut s);
+                    let base = if e.abs() >= 0.5 { x0.row(i).to_vec() } else { mean.clone() };
+                    seen[if e.abs() >= 0.5 { 4 } else { 5 }] += 1;
+                    dive_y(&rabbit, &base, e, j, &mut a);
+                    dives.push((i, a.clone(), s));
+                    clamp(&mut a);
+                    want.push(a);
                 }
-            }
-            for (xr, &c) in opt.x.rows().zip(&opt.cost) {
-                assert_eq!(c, Function::Sphere.value(xr));
+                // The dives, in hawk order: Y (repaired) if it beats the hawk's cost, else Z = Y +
+                // S ⊙ LF with LF's normals drawn now, else the hawk stays.
+                let old_cost = opt.cost.clone();
+                for (i, y, s) in &dives {
+                    if Function::Sphere.value(&want[*i]) < old_cost[*i] {
+                        continue;
+                    }
+                    let mut lf = vec![0.0; dim];
+                    levy.fill(&mut twin, &mut lf);
+                    let mut z: Vec<f64> = y.iter().zip(s).zip(&lf).map(|((y, s), l)| y + s * l).collect();
+                    clamp(&mut z);
+                    zs[usize::from(Function::Sphere.value(&z) < old_cost[*i])] += 1;
+                    want[*i] = if Function::Sphere.value(&z) < old_cost[*i] { z } else { x0.row(*i).to_vec() };
+                }
+                let before = ctx.evaluations();
+                opt.step(&mut ctx);
+                let spent = ctx.evaluations() - before;
+                let k = dives.len() as u64;
+                assert!(spent >= n as u64 + k && spent <= n as u64 + 2 * k, "{it}: {spent} for {k} dives");
+                for (i, a) in want.iter().enumerate() {
+                    assert_eq!(opt.x.row(i), &a[..], "iteration {it}, hawk {i}");
+                }
+                for (xr, &c) in opt.x.rows().zip(&opt.cost) {
+                    assert_eq!(c, Function::Sphere.value(xr));
+                }
             }
         }
-        // Every branch ran at least once (seed chosen so).
+        // Every branch ran at least once (seeds chosen so), and Z was both kept and refused.
         assert!(seen.iter().all(|&k| k > 0), "{seen:?}");
+        assert!(zs.iter().all(|&k| k > 0), "{zs:?}");
     }
 
     #[test]
