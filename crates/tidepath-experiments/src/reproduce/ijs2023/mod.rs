@@ -23,7 +23,7 @@ pub(super) fn run(opts: &ReproduceOptions, progress: &(dyn Fn(usize, usize) + Sy
     let runs = opts.runs as usize;
     let per_table = paper::PLANNERS.len() * runs;
     let tables = if opts.wants("tables") { paper::SETTINGS.len() } else { 0 };
-    let fleet_runs = if opts.wants("fleet") { runs } else { 0 };
+    let fleet_runs = if opts.wants("fleet") { fleet::PLANNERS.len() * runs } else { 0 };
     let total = tables * per_table + fleet_runs;
     let mut outcomes = Vec::new();
     let mut done = 0;

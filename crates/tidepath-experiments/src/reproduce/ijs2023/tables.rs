@@ -178,8 +178,8 @@ pub fn experiment(
 
     // The side-by-side table of travel times.
     let mut table = String::from(
-        "| planner | T_best (s) | paper | T_mean (s) | paper | STD (s) | paper | success | paper | gap of T_best to the \
-         straight line | s per run | paper (s) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| planner | T_best (s) | paper | T_mean (s) | paper | STD (s) | paper | success | paper | T_best against the \
+         straight line at still-water speed | s per run | paper (s) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for p in PLANNERS {
         let runs = of(&outcomes, p);

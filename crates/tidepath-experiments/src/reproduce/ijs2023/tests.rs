@@ -86,7 +86,7 @@ fn table2_runs_every_planner_and_judges_every_claim() {
 #[test]
 fn the_fleet_plans_three_vehicles_together() {
     let o = super::fleet::experiment(&opts(2), &|_| {}).unwrap();
-    assert_eq!(o.comparison.records.len(), 2);
+    assert_eq!(o.comparison.records.len(), 2 * super::fleet::PLANNERS.len());
     assert!(o.comparison.records.iter().all(|r| r.missions.len() == 3));
     let t = &o.tables[0].1;
     for row in ["| success |", "| common arrival (s)", "| total current penalty"] {
