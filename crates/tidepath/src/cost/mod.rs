@@ -5,6 +5,8 @@ pub mod amfa2015;
 pub mod general;
 pub mod ijs2023;
 pub mod lfhh2019;
+#[cfg(test)]
+mod test_support;
 pub mod wpa2017;
 
 pub use amfa2015::{Amfa2015Cost, Amfa2015Params};

@@ -2,34 +2,17 @@
 //! parameter rules.
 
 use super::*;
-use crate::geom::Aabb;
+use crate::cost::test_support::{close, flat, free_vehicle, open_world, term};
 use crate::mission::Mission;
 use crate::path::ModelSettings;
 use crate::vehicle::Vehicle;
 use crate::world::terrain::{GaussianPeaks, Peak, Terrain};
 use crate::world::{Obstacle, Shape, World};
 use rand::Rng as _;
-use std::f64::consts::{FRAC_PI_2, PI};
-
-/// A 3000 x 3000 m box, 1000 m deep, still water, no seabed in it.
-fn open_world() -> World {
-    World::open(Aabb::new(Vec3::new(0.0, 0.0, -1000.0), Vec3::new(3000.0, 3000.0, 0.0)))
-}
-
-fn flat(z: f64) -> Terrain {
-    Terrain::Peaks(GaussianPeaks { base: z, peaks: vec![], ceiling: None })
-}
 
 /// A vehicle whose own limits never bind, at 2 m/s, with the given safety distance.
 fn vehicle(safety: f64) -> Vehicle {
-    Vehicle {
-        speed: 2.0,
-        max_turn: PI,
-        max_pitch: FRAC_PI_2,
-        depth_max: 1000.0,
-        safety_distance: safety,
-        ..Vehicle::default()
-    }
+    free_vehicle(2.0, safety)
 }
 
 fn params(table: &str) -> Result<Checked<Amfa2015Params>> {
@@ -39,14 +22,6 @@ fn params(table: &str) -> Result<Checked<Amfa2015Params>> {
 
 fn cost_with(table: &str) -> Amfa2015Cost {
     Amfa2015Cost::new(params(table).unwrap())
-}
-
-fn term(terms: &[(&str, f64)], name: &str) -> f64 {
-    terms.iter().find(|t| t.0 == name).unwrap().1
-}
-
-fn close(a: f64, b: f64) {
-    assert!((a - b).abs() <= 1e-12 * (1.0 + b.abs()), "{a} != {b}");
 }
 
 /// Total, terms, (k1, k2) and tidepath's verdict for a mission from the first to the last

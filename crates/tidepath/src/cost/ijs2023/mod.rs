@@ -531,4 +531,6 @@ pub fn build(table: &toml::Table) -> Result<Box<dyn CostModel>> {
 }
 
 #[cfg(test)]
+mod fast_pass_tests;
+#[cfg(test)]
 mod tests;
