@@ -38,3 +38,16 @@ pub fn term(terms: &[(&str, f64)], name: &str) -> f64 {
 pub fn close(a: f64, b: f64) {
     assert!((a - b).abs() <= 1e-12 * (1.0 + b.abs()), "{a} != {b}");
 }
+
+/// Each `(table, prefix)`: parsing the weights `table` fails with one line starting with
+/// `prefix` (the field, and the rule where given).
+pub fn assert_refused<T>(parse: impl Fn(&str) -> crate::error::Result<T>, cases: &[(&str, &str)]) {
+    for (table, field) in cases {
+        let e = match parse(table) {
+            Ok(_) => panic!("{table}: accepted"),
+            Err(e) => e.to_string(),
+        };
+        assert!(e.starts_with(field), "{table}: {e}");
+        assert_eq!(e.lines().count(), 1, "{e}");
+    }
+}
