@@ -110,7 +110,7 @@ proptest! {
             peaks: hills.iter().map(|h| Peak { x: h.x, y: h.y, height: h.h, sigma_x: h.s, sigma_y: h.s }).collect(),
             ceiling: None,
         });
-        let world = World {
+        let world = World { waves: Default::default(),
             bounds: Aabb::new(Vec3::new(0.0, 0.0, -500.0), Vec3::new(SIZE, SIZE, 0.0)),
             dims: Dims::Three,
             terrain,
@@ -202,6 +202,7 @@ fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
             })
             .collect();
         let world = World {
+            waves: Default::default(),
             bounds: Aabb::new(Vec3::new(0.0, 0.0, -500.0), Vec3::new(SIZE, SIZE, 0.0)),
             dims: Dims::Three,
             terrain: Terrain::Peaks(GaussianPeaks {
@@ -214,6 +215,7 @@ fn dense_recheck_agrees_on_thousands_of_feasible_paths_in_moving_worlds() {
             frame: None,
         };
         let vehicle = Vehicle {
+            propulsion: Default::default(),
             speed: 1.5,
             safety_distance: rng.random_range(0.0..10.0),
             max_turn: std::f64::consts::PI,

@@ -40,7 +40,15 @@ fn world(current: Current) -> World {
         obstacles.push(Obstacle { shape, velocity, window: None });
     }
     let bounds = Aabb::new(Vec3::new(0.0, 0.0, -1000.0), Vec3::new(19900.0, 11940.0, 0.0));
-    World { bounds, dims: tidepath::world::Dims::Three, terrain, obstacles, current, frame: None }
+    World {
+        waves: Default::default(),
+        bounds,
+        dims: tidepath::world::Dims::Three,
+        terrain,
+        obstacles,
+        current,
+        frame: None,
+    }
 }
 
 fn path() -> Vec<Vec3> {

@@ -16,6 +16,7 @@ use tidepath::world::{Current, Dims, Terrain, World};
 
 fn bench(c: &mut Criterion) {
     let world = World {
+        waves: Default::default(),
         bounds: Aabb::new(Vec3::ZERO, Vec3::new(10_000.0, 10_000.0, 0.0)),
         dims: Dims::Two,
         terrain: Terrain::None,

@@ -30,6 +30,7 @@ fn world() -> World {
         }
     }
     World {
+        waves: Default::default(),
         bounds: Aabb::new(Vec3::ZERO, Vec3::new(1000.0, 1000.0, 0.0)),
         dims: Dims::Two,
         terrain: Terrain::None,

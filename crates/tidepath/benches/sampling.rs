@@ -29,6 +29,7 @@ fn world(dims: Dims) -> World {
     }
     let z = if dims == Dims::Three { -400.0 } else { 0.0 };
     World {
+        waves: Default::default(),
         bounds: Aabb::new(Vec3::new(0.0, 0.0, z), Vec3::new(20000.0, 40000.0, 0.0)),
         dims,
         terrain: Terrain::None,
@@ -43,6 +44,7 @@ fn bench(c: &mut Criterion) {
     let cost = GeneralCost::new(GeneralWeights::from_table(&weights, "w").unwrap());
     let settings = ModelSettings::default();
     let vehicle = Vehicle {
+        propulsion: Default::default(),
         speed: 1.5,
         max_turn: std::f64::consts::PI,
         max_pitch: 30f64.to_radians(),

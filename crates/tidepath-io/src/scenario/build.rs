@@ -317,6 +317,7 @@ fn build_vehicle(s: &VehicleSpec, at: &str) -> Result<Vehicle> {
     };
     let speed_range = build_speed_range(s, at)?;
     Ok(Vehicle {
+        propulsion: Default::default(),
         speed_range,
         turn_radius,
         speed: s.speed,

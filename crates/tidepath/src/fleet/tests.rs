@@ -71,6 +71,7 @@ fn pair_overrides_and_the_penalty() {
 fn swirling() -> World {
     let vortex = |x, y, s| LambOseen { x, y, strength: s, core_radius: 200.0 };
     World {
+        waves: Default::default(),
         bounds: Aabb::new(Vec3::ZERO, Vec3::new(1000.0, 1000.0, 0.0)),
         dims: Dims::Two,
         terrain: Terrain::None,

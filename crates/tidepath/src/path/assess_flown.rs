@@ -206,6 +206,7 @@ enum IssueKey {
     Obstacle(usize),
     Current,
     NoCurrentData,
+    NoWaveData,
 }
 
 impl IssueKey {
@@ -215,6 +216,7 @@ impl IssueKey {
             MotionIssue::Obstacle(k) => IssueKey::Obstacle(k),
             MotionIssue::Current { .. } => IssueKey::Current,
             MotionIssue::NoCurrentData => IssueKey::NoCurrentData,
+            MotionIssue::NoWaveData => IssueKey::NoWaveData,
         }
     }
 }

@@ -15,6 +15,7 @@ fn world() -> World {
 
 fn vehicle(radius: Option<f64>) -> Vehicle {
     Vehicle {
+        propulsion: Default::default(),
         speed: 2.0,
         max_turn: PI,
         max_pitch: 30f64.to_radians(),

@@ -14,6 +14,7 @@ fn world() -> World {
 
 fn vehicle() -> Vehicle {
     Vehicle {
+        propulsion: Default::default(),
         speed: 2.0,
         max_turn: 60f64.to_radians(),
         max_pitch: 30f64.to_radians(),

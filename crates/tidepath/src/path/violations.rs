@@ -200,6 +200,13 @@ pub(super) fn motion_issue_text(
                 format!("{place} passes where the current forecast has no data (land or fill), first at {at}"),
             )
         }
+        MotionIssue::NoWaveData => {
+            let at = world.waves.first_gap_on(a, b).map(|(x, y)| world.place(x, y)).unwrap_or_default();
+            (
+                ViolationKind::Current,
+                format!("{place} passes where the wave forecast has no data (land or fill), first at {at}"),
+            )
+        }
     }
 }
 

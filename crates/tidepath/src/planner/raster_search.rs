@@ -136,7 +136,7 @@ impl<'a> RasterSearch<'a> {
             start_point: m.start,
             goal_point: m.goal,
             departure: m.departure_time,
-            best_speed: m.vehicle.max_speed() + hint,
+            best_speed: m.vehicle.best_ground_speed(problem.world.waves.height_bound(), hint),
             admissible: bound.is_some(),
             tan_pitch: m.vehicle.max_pitch.tan(),
         }))

@@ -133,7 +133,7 @@ impl Exclude {
                         let shape = model.world.obstacles[index].shape_at(t);
                         push_out(&shape, p, reach, planar, hint)
                     }
-                    StateIssue::NoCurrentData => break,
+                    StateIssue::NoCurrentData | StateIssue::NoWaveData => break,
                 };
                 let next = clamp_to_domain(model, moved);
                 if next == p {

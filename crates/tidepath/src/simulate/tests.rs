@@ -7,6 +7,7 @@ use crate::world::{Current, Dims, Terrain};
 
 pub(super) fn world_2d() -> World {
     World {
+        waves: Default::default(),
         bounds: Aabb::new(Vec3::ZERO, Vec3::new(1000.0, 400.0, 0.0)),
         dims: Dims::Two,
         terrain: Terrain::None,
@@ -138,6 +139,7 @@ fn the_window_rule_accepts_a_piece_or_the_whole_route() {
     use crate::planner::registry;
     use crate::world::{Obstacle, Shape};
     let world = World {
+        waves: Default::default(),
         obstacles: vec![Obstacle::fixed(Shape::Circle { center: crate::geom::Vec2::new(850.0, 200.0), radius: 40.0 })],
         ..world_2d()
     };

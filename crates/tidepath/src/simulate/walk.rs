@@ -220,6 +220,7 @@ pub fn track_violations(worlds: &[(f64, Validator<'_>)], points: &[Vec3], times:
                 MotionIssue::Obstacle(k) => format!("comes closer to obstacle {k} than the safety distance"),
                 MotionIssue::Current { pieces } => format!("the current stops the vehicle on {pieces} pieces"),
                 MotionIssue::NoCurrentData => "passes where the current forecast has no data".to_string(),
+                MotionIssue::NoWaveData => "passes where the wave forecast has no data".to_string(),
             };
             out.push(format!("track segment {i} leaving at t = {t:.1} s {what}"));
         }

@@ -79,6 +79,8 @@ pub enum StateIssue {
     },
     /// The current forecast has no data here (land or fill in its file).
     NoCurrentData,
+    /// The wave forecast has no data here, and the vehicle is a wave glider.
+    NoWaveData,
 }
 
 /// One reason a motion is invalid.
@@ -92,6 +94,8 @@ pub enum MotionIssue {
     Current { pieces: u32 },
     /// The motion passes where the current forecast has no data.
     NoCurrentData,
+    /// A wave glider's motion passes where the wave forecast has no data.
+    NoWaveData,
 }
 
 /// The verdict on one motion.
@@ -103,7 +107,7 @@ pub struct MotionCheck {
     pub collisions: u32,
     /// Pieces where the current stops the vehicle.
     pub blocked: u32,
-    /// 1 when the motion passes where the current forecast has no data, else 0.
+    /// 1 for each forecast (current; waves for a glider) with no data where the motion passes.
     pub gaps: u32,
     /// The first issue found (seabed, then fixed obstacles, then moving ones, then current).
     pub first: Option<MotionIssue>,
@@ -167,10 +171,7 @@ impl<'a> Validator<'a> {
                 return Err(StateIssue::Obstacle { index, inside: o.contains(p, t, 0.0) });
             }
         }
-        if !self.world.current.has_data(p) {
-            return Err(StateIssue::NoCurrentData);
-        }
-        Ok(())
+        self.forecast_data(p)
     }
 
     /// Is `p` valid whatever the time: the checks of [`Validator::state`] without the moving
@@ -187,8 +188,17 @@ impl<'a> Validator<'a> {
                 return Err(StateIssue::Obstacle { index, inside: o.contains(p, 0.0, 0.0) });
             }
         }
+        self.forecast_data(p)
+    }
+
+    /// Whether the forecasts the vehicle's speed depends on have data at `p`: the current's
+    /// always, the waves' for a wave glider.
+    fn forecast_data(&self, p: Vec3) -> Result<(), StateIssue> {
         if !self.world.current.has_data(p) {
             return Err(StateIssue::NoCurrentData);
+        }
+        if self.vehicle.glider().is_some() && !self.world.waves.has_data(p) {
+            return Err(StateIssue::NoWaveData);
         }
         Ok(())
     }
@@ -223,6 +233,9 @@ impl<'a> Validator<'a> {
             StateIssue::NoCurrentData => {
                 format!("{shown} has no current data in the forecast (land or fill in world.current.path)")
             }
+            StateIssue::NoWaveData => {
+                format!("{shown} has no wave data in the forecast (land or fill in world.waves)")
+            }
         }
     }
 
@@ -239,7 +252,10 @@ impl<'a> Validator<'a> {
     ///
     /// Crab model: one piece in still water or a uniform current, else pieces of at most
     /// `current_step` metres, each at the ground speed for the current at its midpoint when the
-    /// vehicle enters it. Vector-sum model: one piece at the model's mean speed.
+    /// vehicle enters it. Vector-sum model: one piece at the model's mean speed. A wave glider
+    /// ignores `v` and the travel model: its pieces are cut the same way (also where the waves
+    /// vary) and each is flown at [`crate::vehicle::GliderSpeed::ground_speed`] for the waves
+    /// and current at its midpoint.
     #[inline]
     pub fn for_each_piece_at(&self, a: Vec3, b: Vec3, t0: f64, v: f64, mut f: impl FnMut(Piece)) -> (f64, u32) {
         let len = a.distance(b);
@@ -249,6 +265,29 @@ impl<'a> Validator<'a> {
         }
         let d = (b - a) / len;
         let current = &self.world.current;
+        if let Some(glider) = self.vehicle.glider() {
+            let n = self.pieces_of(len);
+            let step = len / n as f64;
+            let (mut t, mut blocked) = (t0, 0);
+            let mut p0 = a;
+            for k in 0..n {
+                let mid = a + d * (step * (k as f64 + 0.5));
+                let h = self.world.waves.height(mid, t);
+                let g = match glider.ground_speed(h, current.velocity(mid, t).dot(d)) {
+                    Some(g) => g,
+                    None => {
+                        blocked += 1;
+                        glider.min_speed
+                    }
+                };
+                let t1 = t + step / g;
+                let p1 = if k + 1 == n { b } else { a + d * (step * (k + 1) as f64) };
+                f(Piece { p0, p1, t0: t, t1 });
+                p0 = p1;
+                t = t1;
+            }
+            return (t, blocked);
+        }
         match self.settings.travel {
             TravelModel::Crab => {
                 if let Current::None = current {
@@ -292,8 +331,9 @@ impl<'a> Validator<'a> {
     /// judge than a short one.
     #[inline]
     pub fn pieces_of(&self, len: f64) -> u32 {
+        let waves_vary = self.vehicle.glider().is_some() && self.world.waves.varies();
         match self.world.current {
-            Current::None | Current::Uniform(_) => 1,
+            Current::None | Current::Uniform(_) if !waves_vary => 1,
             _ if len > self.world.bounds.size().length() => 1,
             _ => (len / self.settings.current_step).ceil().clamp(1.0, MAX_PIECES) as u32,
         }
@@ -398,8 +438,12 @@ impl<'a> Validator<'a> {
             report(&mut out, MotionIssue::Current { pieces: blocked });
         }
         if world.current.first_gap_on(a, b).is_some() {
-            out.gaps = 1;
+            out.gaps += 1;
             report(&mut out, MotionIssue::NoCurrentData);
+        }
+        if self.vehicle.glider().is_some() && world.waves.first_gap_on(a, b).is_some() {
+            out.gaps += 1;
+            report(&mut out, MotionIssue::NoWaveData);
         }
         out
     }

@@ -233,3 +233,67 @@ fn a_blocked_motion_is_cut_at_its_last_valid_point() {
     assert_eq!(val.last_valid(a, Vec3::new(200.0, 100.0, -50.0), 0.0, 1.0).0, None);
     assert_eq!(val.last_valid(Vec3::new(284.5, 100.0, -50.0), b, 0.0, 1.0).0, None);
 }
+
+fn glider() -> Vehicle {
+    let g = crate::vehicle::GliderSpeed::default();
+    Vehicle { safety_distance: 1.0, propulsion: crate::vehicle::Propulsion::WaveGlider(g), ..Vehicle::default() }
+}
+
+#[test]
+fn a_glider_flies_at_the_regression_speed_whatever_the_travel_model() {
+    let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, 0.0), Vec3::new(4000.0, 4000.0, 0.0)));
+    w.dims = Dims::Two;
+    w.waves = crate::world::Waves::Uniform(2.0);
+    w.current = Current::Uniform(Vec3::new(0.5, 0.3, 0.0));
+    let v = glider();
+    for travel in [TravelModel::Crab, TravelModel::VectorSum] {
+        let s = ModelSettings { travel, ..ModelSettings::default() };
+        let val = Validator::new(&w, &v, &s);
+        // East: 0.1623 * 2 + 0.266 * 0.5 = 0.4576 m/s (the cross-current plays no part).
+        let (t, blocked) = val.travel_time(Vec3::ZERO, Vec3::new(1000.0, 0.0, 0.0), 0.0);
+        assert!((t - 1000.0 / 0.4576).abs() < 1e-9 && blocked == 0, "{t}");
+        // West: 0.3246 - 0.133 = 0.1916 m/s.
+        let (t, _) = val.travel_time(Vec3::new(1000.0, 0.0, 0.0), Vec3::ZERO, 0.0);
+        assert!((t - 1000.0 / 0.1916).abs() < 1e-9, "{t}");
+    }
+    // Calm water and a head current that drives it back: blocked, flown at the floor.
+    w.waves = crate::world::Waves::Uniform(0.5);
+    w.current = Current::Uniform(Vec3::new(-0.4, 0.0, 0.0));
+    let s = ModelSettings::default();
+    let val = Validator::new(&w, &v, &s);
+    let m = val.motion(Vec3::ZERO, Vec3::new(100.0, 0.0, 0.0), 0.0);
+    assert_eq!(m.first, Some(MotionIssue::Current { pieces: 1 }));
+    assert!((m.arrival - 100.0 / 0.05).abs() < 1e-9);
+}
+
+#[test]
+fn a_glider_follows_gridded_waves_piece_by_piece_and_refuses_their_gaps() {
+    let mut w = World::open(Aabb::new(Vec3::ZERO, Vec3::new(400.0, 400.0, 0.0)));
+    w.dims = Dims::Two;
+    // Waves of 1 m at x = 0 rising to 3 m at x = 400, steady.
+    let grid = RegularGrid2::new(0.0, 0.0, 200.0, 200.0, 3, 3, "g").unwrap();
+    let layer = vec![1.0, 2.0, 3.0, 1.0, 2.0, 3.0, 1.0, 2.0, 3.0];
+    let waves = crate::world::waves::WaveGrid::new(grid, vec![0.0], vec![layer], "g").unwrap();
+    w.waves = crate::world::Waves::Grid(waves.clone());
+    let v = glider();
+    let s = ModelSettings { current_step: 100.0, ..ModelSettings::default() };
+    let val = Validator::new(&w, &v, &s);
+    // Four pieces of 100 m at midpoints x = 50, 150, 250, 350: heights 1.25, 1.75, 2.25, 2.75.
+    let expected: f64 = [1.25, 1.75, 2.25, 2.75].iter().map(|h| 100.0 / (0.1623 * h)).sum();
+    let (t, _) = val.travel_time(Vec3::new(0.0, 200.0, 0.0), Vec3::new(400.0, 200.0, 0.0), 0.0);
+    assert!((t - expected).abs() < 1e-9, "{t} vs {expected}");
+    // A thruster vehicle ignores the waves: one piece at its speed.
+    let auv = Vehicle { speed: 2.0, ..Vehicle::default() };
+    let (t, _) = Validator::new(&w, &auv, &s).travel_time(Vec3::ZERO, Vec3::new(400.0, 0.0, 0.0), 0.0);
+    assert_eq!(t, 200.0);
+    // Node 8 (400, 400) without data: the glider may not enter the cell touching it, the AUV may.
+    w.waves = crate::world::Waves::Grid(waves.with_gaps(vec![8], "g").unwrap());
+    let val = Validator::new(&w, &v, &s);
+    assert_eq!(val.state(Vec3::new(300.0, 300.0, 0.0), 0.0), Err(StateIssue::NoWaveData));
+    assert!(val.describe(Vec3::new(300.0, 300.0, 0.0), StateIssue::NoWaveData).contains("no wave data"));
+    let m = val.motion(Vec3::new(0.0, 100.0, 0.0), Vec3::new(400.0, 100.0, 0.0), 0.0);
+    assert_eq!((m.gaps, m.first), (0, None));
+    let m = val.motion(Vec3::new(0.0, 300.0, 0.0), Vec3::new(400.0, 300.0, 0.0), 0.0);
+    assert_eq!((m.gaps, m.first), (1, Some(MotionIssue::NoWaveData)));
+    assert_eq!(Validator::new(&w, &auv, &s).state(Vec3::new(300.0, 300.0, 0.0), 0.0), Ok(()));
+}

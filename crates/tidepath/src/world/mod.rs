@@ -1,4 +1,4 @@
-//! The world the robot moves through: domain, seabed, obstacles and currents.
+//! The world the robot moves through: domain, seabed, obstacles, currents and waves.
 //!
 //! The world answers questions (elevation at a point, current at a point and time, does a
 //! segment traversed between two times touch the seabed or an obstacle) and knows nothing about
@@ -8,14 +8,17 @@
 pub mod changes;
 pub mod current;
 pub mod grid;
+pub mod node_gaps;
 pub mod obstacle;
 pub mod query;
 pub mod terrain;
+pub mod waves;
 
 pub use current::Current;
 pub use grid::RegularGrid2;
 pub use obstacle::{Obstacle, Shape};
 pub use terrain::Terrain;
+pub use waves::Waves;
 
 use crate::geom::Aabb;
 
@@ -37,6 +40,8 @@ pub struct World {
     pub terrain: Terrain,
     pub obstacles: Vec<Obstacle>,
     pub current: Current,
+    /// The sea state: significant wave height, read by wave-propelled vehicles only.
+    pub waves: Waves,
     /// The latitude/longitude frame of a geographic world, so messages can name places in
     /// degrees; `None` for a local one.
     pub frame: Option<crate::geo::GeoFrame>,
@@ -104,6 +109,7 @@ impl World {
             terrain: Terrain::None,
             obstacles: Vec::new(),
             current: Current::None,
+            waves: Waves::None,
             frame: None,
         }
     }

@@ -183,6 +183,7 @@ mod tests {
         // A wall from the bottom edge to y = 900 between start and goal: every path goes round
         // its top, at least 2 sqrt(380^2 + 800^2) + 40 = 1811 m; the straight line is 800 m.
         let w = World {
+            waves: Default::default(),
             bounds: Aabb::new(Vec3::ZERO, Vec3::new(1000.0, 1000.0, 0.0)),
             dims: Dims::Two,
             terrain: Terrain::None,

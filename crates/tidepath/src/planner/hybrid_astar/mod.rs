@@ -273,7 +273,7 @@ impl HybridAstar {
             goal: m.goal,
             start: m.start,
             departure: m.departure_time,
-            best_speed: m.vehicle.max_speed() + current,
+            best_speed: m.vehicle.best_ground_speed(problem.world.waves.height_bound(), current),
             shot_ratio: self.params.shot_ratio,
             weight: self.params.weight,
             goal_headings: self.params.goal_headings,

@@ -18,6 +18,7 @@ use crate::world::{Current, Obstacle, Shape, Terrain, World};
 
 fn world_2d(w: f64, h: f64) -> World {
     World {
+        waves: Default::default(),
         bounds: Aabb::new(Vec3::ZERO, Vec3::new(w, h, 0.0)),
         dims: Dims::Two,
         terrain: Terrain::None,
@@ -29,6 +30,7 @@ fn world_2d(w: f64, h: f64) -> World {
 
 fn vehicle(radius: Option<f64>) -> Vehicle {
     Vehicle {
+        propulsion: Default::default(),
         speed: 1.5,
         max_turn: PI,
         max_pitch: 20f64.to_radians(),

@@ -91,7 +91,7 @@ impl<'a> Edges<'a> {
             cost: problem.cost,
             resolution,
             time_varying: !time_invariant(problem.world),
-            best_speed: v.max_speed() + current,
+            best_speed: v.best_ground_speed(problem.world.waves.height_bound(), current),
             motion_checks: 0,
         })
     }

@@ -21,6 +21,7 @@ use crate::world::{Current, Dims, Obstacle, Shape, Terrain, World};
 
 fn world_2d(w: f64, h: f64) -> World {
     World {
+        waves: Default::default(),
         bounds: Aabb::new(Vec3::ZERO, Vec3::new(w, h, 0.0)),
         dims: Dims::Two,
         terrain: Terrain::None,
@@ -32,6 +33,7 @@ fn world_2d(w: f64, h: f64) -> World {
 
 fn vehicle() -> Vehicle {
     Vehicle {
+        propulsion: Default::default(),
         speed: 1.5,
         max_turn: PI,
         max_pitch: 30f64.to_radians(),

@@ -1,5 +1,21 @@
 //! What the robot can do. Angles are stored in radians; scenario files give degrees.
 
+mod glider;
+
+pub use glider::GliderSpeed;
+
+/// How the vehicle is propelled, which decides its speed over ground.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Propulsion {
+    /// Thrusters: a through-water speed the plan chooses, combined with the current by the
+    /// scenario's travel model.
+    #[default]
+    Thruster,
+    /// A wave glider (acopf2016): the speed over ground follows the sea state and the current
+    /// ([`GliderSpeed`]); `speed`, `speed_range` and the travel model do not apply.
+    WaveGlider(GliderSpeed),
+}
+
 /// Performance limits of one vehicle.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Vehicle {
@@ -24,6 +40,8 @@ pub struct Vehicle {
     /// own speed in it (fleets meeting an arrival time, energy against time); `None` flies
     /// every segment at `speed`.
     pub speed_range: Option<(f64, f64)>,
+    /// Thrusters or waves.
+    pub propulsion: Propulsion,
 }
 
 impl Vehicle {
@@ -40,6 +58,23 @@ impl Vehicle {
     /// The highest through-water speed a segment may be flown at.
     pub fn max_speed(&self) -> f64 {
         self.speed_range.map_or(self.speed, |(_, hi)| hi)
+    }
+
+    /// The fastest ground speed possible where waves are at most `wave_bound` (m) and the
+    /// current at most `current_bound` (m/s): what admissible heuristics divide distances by.
+    pub fn best_ground_speed(&self, wave_bound: f64, current_bound: f64) -> f64 {
+        match self.propulsion {
+            Propulsion::Thruster => self.max_speed() + current_bound,
+            Propulsion::WaveGlider(g) => g.best_speed(wave_bound, current_bound),
+        }
+    }
+
+    /// The wave glider's speed model, if the vehicle is one.
+    pub fn glider(&self) -> Option<&GliderSpeed> {
+        match &self.propulsion {
+            Propulsion::WaveGlider(g) => Some(g),
+            Propulsion::Thruster => None,
+        }
     }
 
     /// The speeds graph and sampling planners try on each edge, fastest first: the range's
@@ -73,6 +108,7 @@ impl Default for Vehicle {
             safety_distance: 10.0,
             turn_radius: None,
             speed_range: None,
+            propulsion: Propulsion::Thruster,
         }
     }
 }
