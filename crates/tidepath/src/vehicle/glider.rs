@@ -44,7 +44,7 @@ impl GliderSpeed {
     #[inline]
     pub fn ground_speed(&self, wave_height: f64, current_along: f64) -> Option<f64> {
         let v = self.wave_gain * wave_height + self.current_gain * current_along;
-        if current_along < 0.0 && !(v > 0.0) {
+        if current_along < 0.0 && v <= 0.0 {
             return None;
         }
         Some(v.max(self.min_speed))
