@@ -9,7 +9,7 @@
 //! the documented slack lets pass); the smallest such radius is returned, for tests that
 //! require the vehicle's radius exactly.
 
-use super::{clock, distance};
+use super::distance;
 use tidepath::geom::Vec3;
 use tidepath::path::ModelSettings;
 use tidepath::vehicle::Vehicle;
@@ -140,7 +140,8 @@ pub fn recheck_flown(
                out: &mut Vec<(Vec3, f64, bool)>|
      -> Result<(), String> {
         let v = super::speed_at(vehicle, speeds, times, *t);
-        let pieces = clock(world, settings, v, a, b, *t).ok_or("the current blocks the vehicle")?;
+        let pieces =
+            super::vehicle_clock(world, settings, vehicle, v, a, b, *t).ok_or("the current blocks the vehicle")?;
         let len = a.distance(b).max(f64::MIN_POSITIVE);
         let t_start = *t;
         let mut done = 0.0;

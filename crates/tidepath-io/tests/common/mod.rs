@@ -66,6 +66,48 @@ pub fn clock(
     Some(out)
 }
 
+/// [`clock`] for `vehicle`: a wave glider's pieces follow its documented speed model instead
+/// (acopf2016 eqs. 1-2 as tidepath reads them: speed over ground = max(min_speed,
+/// wave_gain H + current_gain c.d), H and c at the piece's midpoint when the glider enters it,
+/// pieces of at most `current_step` where waves or current vary; `None` where a head current
+/// drives it backwards). Written here from the formula, not from the validator.
+pub fn vehicle_clock(
+    world: &World,
+    settings: &ModelSettings,
+    vehicle: &Vehicle,
+    v: f64,
+    a: Vec3,
+    b: Vec3,
+    t0: f64,
+) -> Option<Vec<(Vec3, Vec3, f64, f64)>> {
+    let Some(g) = vehicle.glider() else { return clock(world, settings, v, a, b, t0) };
+    let len = a.distance(b);
+    if len == 0.0 {
+        return Some(vec![(a, b, t0, t0)]);
+    }
+    let d = (b - a) / len;
+    let steady_field = matches!(world.current, Current::None | Current::Uniform(_))
+        && matches!(world.waves, tidepath::world::Waves::None | tidepath::world::Waves::Uniform(_));
+    let n = if steady_field { 1 } else { (len / settings.current_step).ceil().clamp(1.0, 100_000.0) as usize };
+    let piece = len / n as f64;
+    let mut out = Vec::with_capacity(n);
+    let mut t = t0;
+    for k in 0..n {
+        let mid = a + d * (piece * (k as f64 + 0.5));
+        let along = world.current.velocity(mid, t).dot(d);
+        let speed = g.wave_gain * world.waves.height(mid, t) + g.current_gain * along;
+        if along < 0.0 && speed <= 0.0 {
+            return None;
+        }
+        let p0 = a + d * (piece * k as f64);
+        let p1 = if k + 1 == n { b } else { a + d * (piece * (k + 1) as f64) };
+        let t1 = t + piece / speed.max(g.min_speed);
+        out.push((p0, p1, t, t1));
+        t = t1;
+    }
+    Some(out)
+}
+
 /// Distance from `p` to the surface of `o` at time `t` (0 inside), by its own formulas.
 pub fn distance(o: &Obstacle, p: Vec3, t: f64) -> f64 {
     let q = p - o.velocity * t;
@@ -124,7 +166,7 @@ pub fn recheck_path(
     let mut t0 = times[0];
     for (i, w) in path.windows(2).enumerate() {
         let v = if speeds.is_empty() { vehicle.speed } else { speeds[i] };
-        let pieces = clock(world, settings, v, w[0], w[1], t0)
+        let pieces = vehicle_clock(world, settings, vehicle, v, w[0], w[1], t0)
             .ok_or_else(|| format!("segment {i}: the current blocks the vehicle"))?;
         for &(p0, p1, ta, tb) in &pieces {
             let n = MIN_SAMPLES.max((p0.distance(p1) / MAX_SPACING).ceil() as usize);
@@ -212,7 +254,7 @@ pub fn recheck_separation(s: &Scenario, r: &PlanReport) -> Result<usize, String>
         let speeds = m.speeds.as_deref().unwrap_or(&[]);
         for (w, &t0) in pts.windows(2).zip(&times) {
             let v = speed_at(&mission.vehicle, speeds, &m.times, t0);
-            let p = clock(&s.world, &s.settings, v, w[0], w[1], t0)
+            let p = vehicle_clock(&s.world, &s.settings, &mission.vehicle, v, w[0], w[1], t0)
                 .ok_or_else(|| format!("mission {}: the current blocks the vehicle", m.name))?;
             pieces.extend(p);
         }
@@ -268,7 +310,7 @@ pub fn recheck_arrivals(s: &Scenario, r: &PlanReport) -> Result<(), String> {
         let speeds = m.speeds.as_deref().unwrap_or(&[]);
         for (w, &t0) in pts.windows(2).zip(&times) {
             let v = speed_at(&mission.vehicle, speeds, &m.times, t0);
-            let p = clock(&s.world, &s.settings, v, w[0], w[1], t0)
+            let p = vehicle_clock(&s.world, &s.settings, &mission.vehicle, v, w[0], w[1], t0)
                 .ok_or_else(|| format!("mission {}: the current blocks the vehicle", m.name))?;
             t = p.last().map_or(t0, |x| x.3);
         }
