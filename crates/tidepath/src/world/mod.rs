@@ -5,6 +5,7 @@
 //! planners. Every query takes a time so that moving obstacles and time-varying currents need
 //! no special cases in the layers above.
 
+pub mod cell_numbering;
 pub mod changes;
 pub mod current;
 pub mod grid;
