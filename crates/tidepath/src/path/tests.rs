@@ -76,6 +76,25 @@ fn crab_travel_time_through_a_cross_current() {
 }
 
 #[test]
+fn a_head_current_driving_a_wave_glider_back_is_said_so() {
+    let mut w = world();
+    // 0.5 m waves and 0.4 m/s against the heading: 0.1623 * 0.5 - 0.2660 * 0.4 = -0.02535 m/s
+    // (acopf2016 eq. 1), so the glider cannot hold the track on the one piece of a uniform field.
+    w.waves = crate::world::Waves::Uniform(0.5);
+    w.current = Current::Uniform(Vec3::new(-0.4, 0.0, 0.0));
+    let v = Vehicle { propulsion: crate::vehicle::Propulsion::WaveGlider(Default::default()), ..vehicle() };
+    let s = ModelSettings { current_step: 100.0, ..ModelSettings::default() };
+    let (a, b) = (Vec3::new(10.0, 10.0, -50.0), Vec3::new(90.0, 10.0, -50.0));
+    let mission = Mission::new("m", v, a, b, 0.0);
+    let found = PathModel::new(&w, &mission, &s).violations(&[a, b]);
+    assert_eq!(found.iter().map(|x| x.kind).collect::<Vec<_>>(), vec![ViolationKind::Current]);
+    assert_eq!(found[0].message, "segment 0: the head current drives the wave glider back on 1 piece(s)");
+    // With the current behind it the glider makes 0.08115 + 0.1064 m/s and nothing is violated.
+    w.current = Current::Uniform(Vec3::new(0.4, 0.0, 0.0));
+    assert!(PathModel::new(&w, &mission, &s).violations(&[a, b]).is_empty());
+}
+
+#[test]
 fn vector_sum_travel_time_follows_seed_003_eq_17() {
     let mut w = world();
     w.current = Current::Uniform(Vec3::new(0.0, 1.5, 0.0));

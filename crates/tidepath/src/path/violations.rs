@@ -189,6 +189,12 @@ pub(super) fn motion_issue_text(
             let c = obstacle_clearance(model, k, (a, b, t, v));
             (ViolationKind::Obstacle, format!("{place} passes {c:.2} m from obstacle {k} (safety distance {safety} m)"))
         }
+        // A wave glider has no through-water speed to stem the current with: the regression
+        // (acopf2016 eqs. 1-2) is not positive where the head current outweighs the waves.
+        MotionIssue::Current { pieces } if veh.glider().is_some() => (
+            ViolationKind::Current,
+            format!("{place}: the head current drives the wave glider back on {pieces} piece(s)"),
+        ),
         MotionIssue::Current { pieces } => (
             ViolationKind::Current,
             format!("{place}: the current stops a {v} m/s vehicle from holding the track on {pieces} piece(s)"),
