@@ -185,9 +185,75 @@ def nocoords():
         z[:] = plane(LON[None, :], LAT[:, None]).astype("f4")
 
 
+# Wave forecasts: a 6 x 5 lon/lat grid of 0.1 degree over the same corner of the sea.
+WLON = np.round(np.arange(-125.0, -124.45, 0.1), 6)  # 6 columns
+WLAT = np.round(np.arange(48.0, 48.45, 0.1), 6)  # 5 rows
+
+
+def wave_height(lon, lat, hours):
+    """The height every wave fixture holds: 1 m + 2 m per degree east + 0.1 m per hour."""
+    return 1.0 + 2.0 * (lon + 125.0) + 0.1 * hours + 0.0 * lat
+
+
+def waves_copernicus():
+    """Copernicus Marine wave layout: VHM0 (time, latitude, longitude) float32 with
+    standard_name sea_surface_wave_significant_height, time in hours since 1950-01-01 at 0, 3
+    and 6 h after 2025-11-12T00:00Z, land (_FillValue) on the 2 x 2 nodes of the north-east
+    corner (longitudes -124.6 and -124.5, latitudes 48.3 and 48.4)."""
+    with Dataset(os.path.join(OUT, "waves_copernicus.nc"), "w", format="NETCDF4") as ds:
+        ds.createDimension("time", 3)
+        coords(ds, WLON, WLAT, "longitude", "latitude")
+        t = ds.createVariable("time", "f8", ("time",))
+        t.units, t.calendar, t.standard_name = "hours since 1950-01-01", "gregorian", "time"
+        t0 = 665016.0  # 2025-11-12T00:00:00Z
+        t[:] = [t0, t0 + 3.0, t0 + 6.0]
+        var = ds.createVariable("VHM0", "f4", ("time", "latitude", "longitude"), fill_value=np.float32(-999.0), zlib=True)
+        var.units, var.standard_name = "m", "sea_surface_wave_significant_height"
+        data = np.ma.zeros((3, len(WLAT), len(WLON)))
+        for k, h in enumerate([0.0, 3.0, 6.0]):
+            data[k] = wave_height(WLON[None, :], WLAT[:, None], h)
+        data[:, -2:, -2:] = np.ma.masked
+        var[:] = data
+
+
+def waves_ww3():
+    """WAVEWATCH III layout: hs (time, lat, lon) float32 without a standard name, classic
+    format, longitudes 0..360, latitudes descending, time in seconds since 1970-01-01 at
+    2025-11-12T00:00Z and 6 h later; no land."""
+    with Dataset(os.path.join(OUT, "waves_ww3.nc"), "w", format="NETCDF3_CLASSIC") as ds:
+        ds.createDimension("time", 2)
+        coords(ds, WLON + 360.0, WLAT[::-1])
+        t = ds.createVariable("time", "f8", ("time",))
+        t.units = "seconds since 1970-01-01 00:00:00"
+        t0 = 1762905600.0  # 2025-11-12T00:00:00Z
+        t[:] = [t0, t0 + 6 * 3600.0]
+        var = ds.createVariable("hs", "f4", ("time", "lat", "lon"))
+        var.units = "m"
+        for k, h in enumerate([0.0, 6.0]):
+            var[k] = wave_height(WLON[None, :], WLAT[::-1][:, None], h).astype("f4")
+
+
+def waves_malformed():
+    """A wave file the readers must refuse: VHM0 on a latitude axis that is not monotonic."""
+    with Dataset(os.path.join(OUT, "waves_malformed.nc"), "w", format="NETCDF3_CLASSIC") as ds:
+        lat = WLAT.copy()
+        lat[2], lat[3] = lat[3], lat[2]
+        coords(ds, WLON, lat, "longitude", "latitude")
+        var = ds.createVariable("VHM0", "f4", ("latitude", "longitude"))
+        var.units, var.standard_name = "m", "sea_surface_wave_significant_height"
+        var[:] = np.ones((len(lat), len(WLON)), dtype="f4")
+
+
+ALL = [classic, offset64, cdf5, nc4, global360, copernicus, hycom, geotiffs, nocoords, waves_copernicus, waves_ww3, waves_malformed]
+
 if __name__ == "__main__":
+    # Names of fixtures on the command line (e.g. `waves_ww3`) write only those.
+    import sys
+
     os.makedirs(OUT, exist_ok=True)
-    for make in [classic, offset64, cdf5, nc4, global360, copernicus, hycom, geotiffs, nocoords]:
-        make()
+    wanted = sys.argv[1:]
+    for make in ALL:
+        if not wanted or make.__name__ in wanted:
+            make()
     for name in sorted(os.listdir(OUT)):
         print(name, os.path.getsize(os.path.join(OUT, name)))

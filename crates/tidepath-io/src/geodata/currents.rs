@@ -60,7 +60,6 @@ pub fn read_currents(
     subset: Option<&GeoBox>,
     decimate: usize,
 ) -> Result<CurrentSeries> {
-    use netcdf_reader::cf::CfAxisType;
     let what = file.display();
     let nc = open(file)?;
     let u = find(&nc, u_name, U_NAMES, "world.current.u", &what)?;
@@ -69,60 +68,99 @@ pub fn read_currents(
         return Err(Error::input(what, format!("`{}` and `{}` do not share their dimensions", u.name(), v.name())));
     }
     let layout = Layout::of(&nc, u, &what)?;
-    // The time and depth dimensions, by their coordinate variables' CF axes.
-    let mut time: Option<(usize, Vec<DateTime<Utc>>)> = None;
-    let mut level: Option<(usize, u64, f64)> = None;
-    for (k, d) in u.dimensions().iter().enumerate() {
-        let Ok(c) = nc.variable(&d.name) else { continue };
-        match netcdf_reader::cf::identify_axis(c) {
-            CfAxisType::T => {
-                let r = netcdf_reader::cf::time::time_ref_from_variable(c)
-                    .map_err(|e| Error::input(what.clone(), format!("time axis `{}`: {e}", c.name())))?
-                    .ok_or_else(|| {
-                        Error::input(what.clone(), format!("time axis `{}` has no `units ... since ...`", c.name()))
-                    })?;
-                let steps = c.num_elements().unwrap_or(u64::MAX);
-                if steps > MAX_TIMES as u64 {
-                    return Err(Error::input(what, format!("{steps} time steps, more than the limit of {MAX_TIMES}")));
+    let axes = Axes::of(&nc, u, depth, &what)?;
+    let depth = axes.level.map(|l| l.2);
+    let (times, steps) = read_steps(&nc, &layout, [u, v], axes, subset, decimate, &what)?;
+    let (u, v) = steps.into_iter().map(|[a, b]| (a, b)).unzip();
+    Ok(CurrentSeries { times, u, v, depth })
+}
+
+/// The time and depth dimensions of a forecast variable, found by their coordinate variables'
+/// CF axes: the time axis decoded with its units and calendar into UTC instants, the depth
+/// level nearest the one asked for.
+pub(crate) struct Axes {
+    /// The time dimension's index in the variable and its instants.
+    pub time: Option<(usize, Vec<DateTime<Utc>>)>,
+    /// The depth dimension's index, the level's index on it and its depth (m, positive down).
+    pub level: Option<(usize, u64, f64)>,
+}
+
+impl Axes {
+    /// The axes of `var` in `nc` (named `what` in errors), the level nearest `depth` (m,
+    /// positive down).
+    pub(crate) fn of(nc: &NcFile, var: &NcVariable, depth: f64, what: &str) -> Result<Self> {
+        use netcdf_reader::cf::CfAxisType;
+        let what = what.to_string();
+        let mut time: Option<(usize, Vec<DateTime<Utc>>)> = None;
+        let mut level: Option<(usize, u64, f64)> = None;
+        for (k, d) in var.dimensions().iter().enumerate() {
+            let Ok(c) = nc.variable(&d.name) else { continue };
+            match netcdf_reader::cf::identify_axis(c) {
+                CfAxisType::T => time = Some((k, time_axis(nc, c, &what)?)),
+                CfAxisType::Z => {
+                    check_axis(c, MAX_AXIS, &what)?;
+                    let values =
+                        nc.read_variable_as_f64(c.name()).map_err(|e| Error::input(what.clone(), e.to_string()))?;
+                    let up =
+                        c.attribute("positive").and_then(|a| a.value.as_string()).is_some_and(|p| p.trim() == "up");
+                    let depths: Vec<f64> = values.iter().map(|&z| if up { -z } else { z }).collect();
+                    let (best, &d) = depths
+                        .iter()
+                        .enumerate()
+                        .min_by(|a, b| (a.1 - depth).abs().total_cmp(&(b.1 - depth).abs()))
+                        .ok_or_else(|| Error::input(what.clone(), format!("depth axis `{}` is empty", c.name())))?;
+                    level = Some((k, best as u64, d));
                 }
-                let values =
-                    nc.read_variable_as_f64(c.name()).map_err(|e| Error::input(what.clone(), e.to_string()))?;
-                let values: Vec<f64> = values.iter().copied().collect();
-                if values.len() > MAX_TIMES {
-                    return Err(Error::input(
-                        what,
-                        format!("{} time steps, more than the limit of {MAX_TIMES}", values.len()),
-                    ));
-                }
-                let times = netcdf_reader::cf::time::decode_times(&values, &r)
-                    .map_err(|e| Error::input(what.clone(), format!("time axis `{}`: {e}", c.name())))?;
-                if times.windows(2).any(|w| w[1] <= w[0]) {
-                    return Err(Error::input(what, format!("time axis `{}` is not increasing", c.name())));
-                }
-                time = Some((k, times));
+                _ => {}
             }
-            CfAxisType::Z => {
-                check_axis(c, MAX_AXIS, &what)?;
-                let values =
-                    nc.read_variable_as_f64(c.name()).map_err(|e| Error::input(what.clone(), e.to_string()))?;
-                let up = c.attribute("positive").and_then(|a| a.value.as_string()).is_some_and(|p| p.trim() == "up");
-                let depths: Vec<f64> = values.iter().map(|&z| if up { -z } else { z }).collect();
-                let (best, &d) = depths
-                    .iter()
-                    .enumerate()
-                    .min_by(|a, b| (a.1 - depth).abs().total_cmp(&(b.1 - depth).abs()))
-                    .ok_or_else(|| Error::input(what.clone(), format!("depth axis `{}` is empty", c.name())))?;
-                level = Some((k, best as u64, d));
-            }
-            _ => {}
         }
+        Ok(Self { time, level })
     }
-    let (t_dim, times) = match time {
+}
+
+/// The instants of the time coordinate `c`, checked increasing and at most [`MAX_TIMES`].
+fn time_axis(nc: &NcFile, c: &NcVariable, what: &str) -> Result<Vec<DateTime<Utc>>> {
+    let r = netcdf_reader::cf::time::time_ref_from_variable(c)
+        .map_err(|e| Error::input(what, format!("time axis `{}`: {e}", c.name())))?
+        .ok_or_else(|| Error::input(what, format!("time axis `{}` has no `units ... since ...`", c.name())))?;
+    let steps = c.num_elements().unwrap_or(u64::MAX);
+    if steps > MAX_TIMES as u64 {
+        return Err(Error::input(what, format!("{steps} time steps, more than the limit of {MAX_TIMES}")));
+    }
+    let values = nc.read_variable_as_f64(c.name()).map_err(|e| Error::input(what, e.to_string()))?;
+    let values: Vec<f64> = values.iter().copied().collect();
+    if values.len() > MAX_TIMES {
+        return Err(Error::input(what, format!("{} time steps, more than the limit of {MAX_TIMES}", values.len())));
+    }
+    let times = netcdf_reader::cf::time::decode_times(&values, &r)
+        .map_err(|e| Error::input(what, format!("time axis `{}`: {e}", c.name())))?;
+    if times.windows(2).any(|w| w[1] <= w[0]) {
+        return Err(Error::input(what, format!("time axis `{}` is not increasing", c.name())));
+    }
+    Ok(times)
+}
+
+/// A forecast's instants and, per time step, one grid per variable read.
+pub(crate) type Steps<const N: usize> = (Vec<DateTime<Utc>>, Vec<[GeoGrid; N]>);
+
+/// Reads the `N` variables `vars` (sharing `layout`'s dimensions) inside `subset` at every time
+/// step of `axes`, at its depth level: the instants and, per step, one grid per variable.
+/// The values held are checked against [`MAX_FORECAST_VALUES`] before any is read.
+pub(crate) fn read_steps<const N: usize>(
+    nc: &NcFile,
+    layout: &Layout,
+    vars: [&NcVariable; N],
+    axes: Axes,
+    subset: Option<&GeoBox>,
+    decimate: usize,
+    what: &str,
+) -> Result<Steps<N>> {
+    let (t_dim, times) = match axes.time {
         Some(t) => (Some(t.0), t.1),
         None => (None, Vec::new()),
     };
     let steps = times.len().max(1);
-    let b = layout.box_runs(subset, decimate, &what)?;
+    let b = layout.box_runs(subset, decimate, what)?;
     let held = steps as u64 * b.nx as u64 * b.ny as u64;
     if held > MAX_FORECAST_VALUES {
         return Err(Error::input(
@@ -133,17 +171,20 @@ pub fn read_currents(
             ),
         ));
     }
-    let mut out = CurrentSeries { times, u: Vec::new(), v: Vec::new(), depth: level.map(|l| l.2) };
+    let mut out = Vec::with_capacity(steps);
     for k in 0..steps {
         let mut fixed = Vec::new();
         if let Some(t) = t_dim {
             fixed.push((t, k as u64));
         }
-        if let Some((d, i, _)) = level {
+        if let Some((d, i, _)) = axes.level {
             fixed.push((d, i));
         }
-        out.u.push(layout.read(&nc, u, &fixed, subset, decimate, &what)?);
-        out.v.push(layout.read(&nc, v, &fixed, subset, decimate, &what)?);
+        let mut grids = Vec::with_capacity(N);
+        for var in vars {
+            grids.push(layout.read(nc, var, &fixed, subset, decimate, what)?);
+        }
+        out.push(grids.try_into().map_err(|_| Error::input(what, "internal: wrong number of grids"))?);
     }
-    Ok(out)
+    Ok((times, out))
 }

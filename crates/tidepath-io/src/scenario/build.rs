@@ -66,9 +66,10 @@ impl Scenario {
 
     pub fn from_spec(spec: ScenarioSpec, source: &str) -> Result<Self> {
         let local = super::geographic::localise(&spec, source)?;
-        let vehicle = build_vehicle(&spec.vehicle, "vehicle")?;
+        let mut vehicle = build_vehicle(&spec.vehicle, "vehicle")?;
         let mut world = build_world(&local.spec.world, vehicle.speed)?;
         world.frame = local.frame.clone();
+        super::waves_build::fit_to_world(&mut vehicle, "vehicle", &world)?;
         let mut warnings = local.warnings;
         let missions = build_missions(&local.spec, &vehicle, &world)?;
         let settings = build_settings(&spec.model, &world)?;
@@ -205,8 +206,7 @@ fn build_missions(spec: &ScenarioSpec, vehicle: &Vehicle, world: &World) -> Resu
         }
         (None, true) => return Err(Error::input("mission", "missing: give [mission] or [[missions]]")),
         (Some(m), true) => {
-            let start = Vec3::from_array(m.start);
-            let goal = Vec3::from_array(m.goal);
+            let (start, goal) = super::cell_endpoints::endpoints(m, world)?;
             check_endpoint("mission.start", start, world)?;
             check_endpoint("mission.goal", goal, world)?;
             check_time("mission.departure_time", m.departure_time)?;
@@ -226,7 +226,11 @@ fn build_missions(spec: &ScenarioSpec, vehicle: &Vehicle, world: &World) -> Resu
                     return Err(Error::input(field("name"), format!("'{}' is used twice", m.name)));
                 }
                 let v = match &m.vehicle {
-                    Some(vs) => build_vehicle(vs, &field("vehicle"))?,
+                    Some(vs) => {
+                        let mut v = build_vehicle(vs, &field("vehicle"))?;
+                        super::waves_build::fit_to_world(&mut v, &field("vehicle"), world)?;
+                        v
+                    }
                     None => vehicle.clone(),
                 };
                 let (start, goal) = (Vec3::from_array(m.start), Vec3::from_array(m.goal));
@@ -315,9 +319,10 @@ fn build_vehicle(s: &VehicleSpec, at: &str) -> Result<Vehicle> {
         }
         r => r,
     };
+    let propulsion = super::waves_build::propulsion(s, at)?;
     let speed_range = build_speed_range(s, at)?;
     Ok(Vehicle {
-        propulsion: Default::default(),
+        propulsion,
         speed_range,
         turn_radius,
         speed: s.speed,
@@ -402,8 +407,25 @@ impl Scenario {
                 "a fleet scenario ([[missions]]) has several starts and goals: edit the file instead",
             ));
         };
-        for (flag, text, point) in [("--from", from, &mut m.start), ("--to", to, &mut m.goal)] {
+        let (start, goal) = (self.start.to_array(), self.goal.to_array());
+        for (flag, text, point, cell, was) in [
+            ("--from", from, &mut m.start, &mut m.start_cell, start),
+            ("--to", to, &mut m.goal, &mut m.goal_cell, goal),
+        ] {
             let Some(text) = text else { continue };
+            // A cell endpoint (`start_cell`) is replaced by a point: the cell's centre, which
+            // the flag then moves (a geographic scenario has its metric frame; cells are
+            // numbered in metres, so its points are turned back into degrees).
+            if cell.take().is_some() {
+                *point = Some(match &self.frame {
+                    Some(f) => {
+                        let (lon, lat) = f.inverse(was[0], was[1]);
+                        [lon, lat, was[2]]
+                    }
+                    None => was,
+                });
+            }
+            let Some(point) = point.as_mut() else { continue };
             let what = if geographic { "LON,LAT[,DEPTH]" } else { "X,Y[,Z]" };
             let values: Vec<f64> = text
                 .split(',')

@@ -1,6 +1,7 @@
-//! Grids given cell by cell in scenario files (`kind = "cells"` for terrain and current): a
+//! Grids given cell by cell in scenario files (`kind = "cells"` for terrain, current and waves): a
 //! map of `#` and `.` or per-cell values, rows from north to south as a map is read, turned
-//! into the world's cell terrain ([`CellGrid`]) and a node current at the cells' centres.
+//! into the world's cell terrain ([`CellGrid`]) and a node current or wave height at the
+//! cells' centres.
 
 use super::spec::{CellsSpec, CurrentCellsSpec};
 use tidepath::error::{Error, Result};
@@ -8,6 +9,7 @@ use tidepath::geom::Aabb;
 use tidepath::world::current::CurrentGrid;
 use tidepath::world::grid::MAX_NODES;
 use tidepath::world::terrain::CellGrid;
+use tidepath::world::waves::WaveGrid;
 use tidepath::world::RegularGrid2;
 
 /// Land height (m above the surface) of `#` cells when the scenario gives none.
@@ -99,11 +101,41 @@ pub(super) fn build_current(spec: &CurrentCellsSpec) -> Result<CurrentGrid> {
             format!("has {} x {} cells; u has {} x {}", shape_v[0], shape_v[1], shape[0], shape[1]),
         ));
     }
-    // Nodes at the cells' centres; a single row or column is doubled so the grid has 2 x 2
-    // nodes (the current is then constant across it).
-    let (mut nx, mut ny) = (shape[0], shape[1]);
-    let widen = |vals: Vec<f64>, nx: usize, ny: usize| -> Vec<f64> {
-        let (wx, wy) = (nx.max(2), ny.max(2));
+    let (grid, mut layers) = centre_nodes(F, spec.origin, spec.resolution, shape, vec![u, v])?;
+    let v = layers.pop().unwrap_or_default();
+    let u = layers.pop().unwrap_or_default();
+    CurrentGrid::new(grid, vec![0.0], vec![u], vec![v], F)
+}
+
+/// A wave height per cell (`[world.waves] kind = "cells"`), at the cells' centres like the
+/// current's: rows from north to south.
+pub(super) fn build_waves(origin: [f64; 2], resolution: f64, heights: &[Vec<f64>]) -> Result<WaveGrid> {
+    const F: &str = "world.waves";
+    check_resolution(F, resolution)?;
+    let (shape, h) = south_first("world.waves.heights", heights)?;
+    let (grid, layers) = centre_nodes(F, origin, resolution, shape, vec![h])?;
+    WaveGrid::new(grid, vec![0.0], layers, F).map_err(|e| match e {
+        // The grid names its layer `world.waves.height`; the cells are `heights`.
+        Error::Input { field, message } if field == "world.waves.height" => {
+            Error::input("world.waves.heights", message)
+        }
+        e => e,
+    })
+}
+
+/// The node grid at the centres of `shape` cells of side `resolution` from `origin`, with
+/// each row-major layer of cell values on it. A single row or column is doubled so the grid
+/// has 2 x 2 nodes (the field is then constant across it).
+fn centre_nodes(
+    field: &str,
+    origin: [f64; 2],
+    resolution: f64,
+    shape: [usize; 2],
+    layers: Vec<Vec<f64>>,
+) -> Result<(RegularGrid2, Vec<Vec<f64>>)> {
+    let (nx, ny) = (shape[0], shape[1]);
+    let (wx, wy) = (nx.max(2), ny.max(2));
+    let widen = |vals: Vec<f64>| -> Vec<f64> {
         let mut out = Vec::with_capacity(wx * wy);
         for j in 0..wy {
             for i in 0..wx {
@@ -112,9 +144,8 @@ pub(super) fn build_current(spec: &CurrentCellsSpec) -> Result<CurrentGrid> {
         }
         out
     };
-    let (u, v) = (widen(u, nx, ny), widen(v, nx, ny));
-    let (half, r) = (spec.resolution / 2.0, spec.resolution);
-    (nx, ny) = (nx.max(2), ny.max(2));
-    let grid = RegularGrid2::new(spec.origin[0] + half, spec.origin[1] + half, r, r, nx, ny, F)?;
-    CurrentGrid::new(grid, vec![0.0], vec![u], vec![v], F)
+    let layers = layers.into_iter().map(widen).collect();
+    let (half, r) = (resolution / 2.0, resolution);
+    let grid = RegularGrid2::new(origin[0] + half, origin[1] + half, r, r, wx, wy, field)?;
+    Ok((grid, layers))
 }

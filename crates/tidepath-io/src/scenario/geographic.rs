@@ -11,17 +11,17 @@
 //!   `resolution` says otherwise, as an envelope nowhere below the file's own surface
 //!   (`resample.rs` says why it holds). Nodes without data (fill values, outside the file)
 //!   are taken as land, [`NO_DATA_ELEVATION`], and counted in a warning.
-//! * Other positions (peaks, vortices, current grids, jet regions) stay metres in the local
-//!   frame, whose origin is the box centre.
+//! * Current and wave forecast files are read and resampled the same way (`forecast.rs`).
+//! * Other positions (peaks, vortices, current and wave grids, jet regions, cell grids) stay
+//!   metres in the local frame, whose origin is the box centre.
 
 use std::path::{Path, PathBuf};
 
 use chrono::{DateTime, Utc};
 
-use super::resample::{resample, water_test, MetricGrid};
+pub(super) use super::forecast::forecast_grid;
+use super::resample::resample;
 use super::spec::*;
-use crate::geodata::currents::read_currents;
-use crate::geodata::currents::MAX_FORECAST_VALUES;
 use crate::geodata::netcdf::{read_bathymetry, Positive};
 use crate::geodata::{esri_ascii, name_decimate, DataFile, Format, GeoBox, EMBEDDED};
 use tidepath::error::{Error, Result};
@@ -57,6 +57,12 @@ pub(crate) fn localise(spec: &ScenarioSpec, source: &str) -> Result<Localised> {
                     "\"file\" reads longitude/latitude data: set world.frame = \"geographic\"",
                 ));
             }
+            if matches!(spec.world.waves, Some(WavesSpec::File { .. })) {
+                return Err(Error::input(
+                    "world.waves.kind",
+                    "\"file\" reads longitude/latitude data: set world.frame = \"geographic\"",
+                ));
+            }
             None
         }
         FrameKind::Geographic => Some(project(&mut out, source, &mut warnings)?),
@@ -64,6 +70,10 @@ pub(crate) fn localise(spec: &ScenarioSpec, source: &str) -> Result<Localised> {
     let mut epoch = epoch;
     if let (Some(f), CurrentSpec::File { .. }) = (&frame, &spec.world.current) {
         epoch = Some(load_currents(&mut out, f, source, epoch, &mut warnings)?);
+    }
+    // Waves after the current: without world.epoch, the current forecast's clock is kept.
+    if let (Some(f), Some(WavesSpec::File { .. })) = (&frame, &spec.world.waves) {
+        epoch = Some(super::forecast::load_waves(&mut out, f, source, epoch, &mut warnings)?);
     }
     Ok(Localised { spec: out, frame, epoch, warnings })
 }
@@ -159,8 +169,13 @@ fn project(spec: &mut ScenarioSpec, source: &str, warnings: &mut Vec<String>) ->
         Ok(())
     };
     if let Some(m) = &mut spec.mission {
-        point(&mut m.start, "mission.start")?;
-        point(&mut m.goal, "mission.goal")?;
+        // Cells (`start_cell`, `goal_cell`) are numbered on the metric terrain grid.
+        if let Some(p) = &mut m.start {
+            point(p, "mission.start")?;
+        }
+        if let Some(p) = &mut m.goal {
+            point(p, "mission.goal")?;
+        }
     }
     for (i, m) in spec.missions.iter_mut().enumerate() {
         point(&mut m.start, &format!("missions[{i}].start"))?;
@@ -242,7 +257,7 @@ pub(super) fn project_obstacle(
 /// The longitude/latitude box holding the metric rectangle `lo`..`hi`, with a margin of 1%.
 /// A rectangle around a pole has no such box (its longitudes go all the way round and its
 /// edges never reach the pole's latitude): refused in one line.
-fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
+pub(super) fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
     for (pole, lat) in [("North", 90.0), ("South", -90.0)] {
         if let Ok((x, y)) = frame.forward(frame.lon0, lat, "world.bounds") {
             if (lo[0]..=hi[0]).contains(&x) && (lo[1]..=hi[1]).contains(&y) {
@@ -281,7 +296,7 @@ fn cover(frame: &GeoFrame, lo: [f64; 2], hi: [f64; 2]) -> Result<GeoBox> {
 }
 
 /// `path` relative to the scenario's folder, or a built-in data file for built-in scenarios.
-fn data_file(path: &str, source: &str, field: &str, warnings: &mut Vec<String>) -> Result<DataFile> {
+pub(super) fn data_file(path: &str, source: &str, field: &str, warnings: &mut Vec<String>) -> Result<DataFile> {
     if let Some(_name) = source.strip_prefix("builtin:") {
         return EMBEDDED
             .iter()
@@ -322,94 +337,6 @@ fn load_currents(
         forecast_grid(&spec.world.current, "world.current", frame, &spec.world, source, epoch, warnings)?;
     spec.world.current = grid;
     Ok(epoch)
-}
-
-/// Reads the current forecast file of `current` (a `CurrentSpec::File`, named `field` in
-/// errors) over the metric domain of `world` (already in metres, its terrain resampled) and
-/// returns it as a metric `CurrentSpec::Grid` on the scenario clock, with the epoch used:
-/// times are seconds after `epoch` (the file's first time when the scenario gives none),
-/// vectors are turned from east/north into the frame's x/y (which differ by the meridian
-/// convergence away from the origin), and water nodes without data (land or fill in the
-/// forecast, at any time step) become gaps: a motion through their cells is invalid and
-/// names where, since a current made up there could carry a plan onto the rocks. Counted in a
-/// warning.
-pub(super) fn forecast_grid(
-    current: &CurrentSpec,
-    field: &str,
-    frame: &GeoFrame,
-    world: &WorldSpec,
-    source: &str,
-    epoch: Option<DateTime<Utc>>,
-    warnings: &mut Vec<String>,
-) -> Result<(CurrentSpec, DateTime<Utc>)> {
-    let CurrentSpec::File { path, u, v, depth, resolution } = current.clone() else {
-        return Err(Error::input(format!("{field}.kind"), "a forecast file needs kind = \"file\""));
-    };
-    let path_field = format!("{field}.path");
-    let file = data_file(&path, source, &path_field, warnings)?;
-    if Format::of(&file, &path_field)? != Format::NetCdf {
-        return Err(Error::input(path_field, format!("`{path}`: current forecasts are read from NetCDF (.nc)")));
-    }
-    let depth = depth.unwrap_or(0.0);
-    if !depth.is_finite() || !(0.0..=12_000.0).contains(&depth) {
-        return Err(Error::input(format!("{field}.depth"), format!("must be from 0 to 12000 m, got {depth}")));
-    }
-    let lo = [world.bounds.min[0], world.bounds.min[1]];
-    let hi = [world.bounds.max[0], world.bounds.max[1]];
-    let subset = cover(frame, lo, hi)?;
-    let series = read_currents(&file, u.as_deref(), v.as_deref(), depth, Some(&subset), 1)?;
-    let epoch = match (epoch, series.times.first()) {
-        (Some(e), _) => e,
-        (None, Some(t)) => *t,
-        (None, None) => return Err(Error::input("world.epoch", "the current file has no time axis: give world.epoch")),
-    };
-    let times: Vec<f64> = if series.times.is_empty() {
-        vec![0.0]
-    } else {
-        series.times.iter().map(|t| (*t - epoch).num_milliseconds() as f64 / 1e3).collect()
-    };
-    let Some(first) = series.u.first() else {
-        return Err(Error::input(path_field, format!("`{path}`: no velocity layer inside the box")));
-    };
-    // All time steps share the grid: their product stays within the forecast limit too.
-    let max_nodes = (MAX_FORECAST_VALUES / series.u.len().max(1) as u64) as usize;
-    let m = MetricGrid::new(first, frame, (lo, hi), resolution, max_nodes, &format!("{field}.resolution"), warnings)?;
-    let water = water_test(&world.terrain);
-    let mut gaps: Vec<usize> = Vec::new();
-    let (mut us, mut vs) = (Vec::new(), Vec::new());
-    for (gu, gv) in series.u.iter().zip(&series.v) {
-        let (eu, ev) = (m.sample(gu, true), m.sample(gv, true));
-        let mut lu = Vec::with_capacity(eu.len());
-        let mut lv = Vec::with_capacity(ev.len());
-        for (k, (&e, &n)) in eu.iter().zip(&ev).enumerate() {
-            let xy = m.xy(k);
-            if !e.is_finite() || !n.is_finite() {
-                if water(xy.0, xy.1) {
-                    gaps.push(k);
-                }
-                lu.push(0.0);
-                lv.push(0.0);
-                continue;
-            }
-            let (u, v) = frame.east_north_to_xy(m.lonlat[k], xy, e, n);
-            lu.push(u);
-            lv.push(v);
-        }
-        us.push(lu);
-        vs.push(lv);
-    }
-    gaps.sort_unstable();
-    gaps.dedup();
-    if let Some(&k) = gaps.first() {
-        let (x, y) = m.xy(k);
-        warnings.push(format!(
-            "{field}: {} water nodes have no current data at some time step (land or fill in the forecast); routes through them are refused; the first at {}",
-            gaps.len(),
-            frame.place(x, y)
-        ));
-    }
-    let (grid_origin, spacing, shape) = (m.origin, m.spacing, m.shape);
-    Ok((CurrentSpec::Grid { origin: grid_origin, spacing, shape, times, u: us, v: vs, no_data: gaps }, epoch))
 }
 
 /// A horizontal vector given east and north at the frame point (x, y), in the frame's x and y.

@@ -9,6 +9,7 @@ use std::collections::BTreeMap;
 use serde::{Deserialize, Serialize};
 
 pub use super::changes_spec::*;
+pub use super::waves_spec::*;
 pub use tidepath::encoding::EncodingSpec;
 
 pub type P3 = [f64; 3];
@@ -70,6 +71,9 @@ pub struct WorldSpec {
     pub obstacles: Vec<ObstacleSpec>,
     #[serde(default)]
     pub current: CurrentSpec,
+    /// The sea state (`[world.waves]`), read by wave gliders; absent: no waves.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub waves: Option<WavesSpec>,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -318,6 +322,18 @@ pub struct JetSpec {
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct VehicleSpec {
+    /// `auv` (thrusters, the default) or `wave-glider` (driven by the waves: acopf2016).
+    #[serde(skip_serializing_if = "VehicleKind::is_auv")]
+    pub kind: VehicleKind,
+    /// The glider's speed regression (acopf2016 eqs. 1-2): m/s per metre of significant wave
+    /// height (default 0.1623), m/s per m/s of current along the heading (default 0.2660),
+    /// and the slowest speed over ground (m/s, default 0.05). Wave gliders only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wave_gain: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub current_gain: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_speed: Option<f64>,
     /// Cruise speed through the water (m/s): every segment's speed without a range, the
     /// default speed and the time normalisation with one.
     pub speed: f64,
@@ -341,6 +357,10 @@ impl Default for VehicleSpec {
     fn default() -> Self {
         let v = tidepath::vehicle::Vehicle::default();
         Self {
+            kind: VehicleKind::Auv,
+            wave_gain: None,
+            current_gain: None,
+            min_speed: None,
             speed: v.speed,
             speed_min: None,
             speed_max: None,
@@ -360,8 +380,17 @@ pub struct MissionSpec {
     /// The mission's name in plans, messages and exports ("mission" when not given).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
-    pub start: P3,
-    pub goal: P3,
+    /// Start and goal as points, or as cells of the terrain's `kind = "cells"` grid numbered
+    /// by acopf2016's eq. 3 (`start_cell`, `goal_cell`, 1-based from the south-west): exactly
+    /// one of each pair.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start: Option<P3>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goal: Option<P3>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start_cell: Option<usize>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goal_cell: Option<usize>,
     #[serde(default)]
     pub departure_time: f64,
     /// Departure as an ISO 8601 UTC instant (instead of `departure_time` seconds).

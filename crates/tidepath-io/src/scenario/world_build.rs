@@ -55,7 +55,8 @@ pub(super) fn build_world(spec: &WorldSpec, vehicle_speed: f64) -> Result<World>
         .map(|(i, o)| build_obstacle(&format!("world.obstacles[{i}]"), o))
         .collect::<Result<Vec<_>>>()?;
     let current = build_current(&spec.current, &bounds, "world.current", vehicle_speed)?;
-    Ok(World { waves: Default::default(), bounds, dims, terrain, obstacles, current, frame: None })
+    let waves = super::waves_build::build_waves(spec.waves.as_ref())?;
+    Ok(World { waves, bounds, dims, terrain, obstacles, current, frame: None })
 }
 
 fn grid2(field: &str, origin: P2, spacing: P2, shape: [usize; 2]) -> Result<RegularGrid2> {
