@@ -60,12 +60,14 @@ pub struct PlanFigure<'a> {
     /// obstacles' outlines and the paths on the plan view; may be empty.
     pub graphs: Vec<PlotGraph<'a>>,
     /// The path (an index into `paths`) the plan view colours by its speed over ground, with
-    /// a colour bar, when the world has a current and the path's drawn line has a time at
-    /// every point: where the current helps and where it hinders. A single plan's figure sets
-    /// it; a comparison leaves it `None`, so each planner keeps its own colour.
+    /// a colour bar, when the world has a current or waves and the path's drawn line has a
+    /// time at every point: where the current (or the sea state) helps and where it hinders. A
+    /// single plan's figure sets it; a comparison leaves it `None`, so each planner keeps its
+    /// own colour.
     pub speed_path: Option<usize>,
-    /// The vehicle's speed through still water (m/s), when it flies at one speed: marked on
-    /// the speed colour bar, the speed over ground where the current neither helps nor hinders.
+    /// The vehicle's speed through still water (m/s), when it flies at one speed (not a wave
+    /// glider, whose speed follows the waves): marked on the speed colour bar, the speed over
+    /// ground where the current neither helps nor hinders.
     pub still_water_speed: Option<f64>,
 }
 
@@ -99,7 +101,10 @@ impl<'a> PlanFigure<'a> {
         let mut fig = Self::new(title, &scenario.world, scenario.start, scenario.goal, scenario.departure_time);
         fig.epoch = scenario.epoch;
         fig.safety_distance = scenario.vehicle.safety_distance;
-        fig.still_water_speed = scenario.vehicle.speed_range.is_none().then_some(scenario.vehicle.speed);
+        // A wave glider's `speed` is only a nominal one (its still-water speed in the highest
+        // waves): nothing to mark on the speed bar.
+        let v = &scenario.vehicle;
+        fig.still_water_speed = (v.speed_range.is_none() && v.glider().is_none()).then_some(v.speed);
         fig
     }
 }

@@ -252,6 +252,22 @@ pub fn speed_color(v: f64, lo: f64, hi: f64) -> RGBColor {
     ramp(&SPEED, (t * 32.0).round() / 32.0)
 }
 
+/// Significant wave height, `lo` to `hi`: a viridis-like ramp from slate blue (calm) through
+/// teal and green to yellow (high seas), apart from the seabed's blues and the speed path's
+/// yellow-to-red. Its dark end is lightened so current arrows (dark, with a pale halo) stay
+/// readable over it. Quantised to 40 shades so neighbouring cells merge into fewer SVG rects.
+pub fn wave_color(h: f64, lo: f64, hi: f64) -> RGBColor {
+    const WAVES: [(f64, [f64; 3]); 5] = [
+        (0.0, [86.0, 62.0, 140.0]),
+        (0.25, [64.0, 112.0, 166.0]),
+        (0.5, [46.0, 160.0, 150.0]),
+        (0.75, [112.0, 205.0, 108.0]),
+        (1.0, [250.0, 230.0, 60.0]),
+    ];
+    let t = if hi > lo { ((h - lo) / (hi - lo)).clamp(0.0, 1.0) } else { 0.5 };
+    ramp(&WAVES, (t * 40.0).round() / 40.0)
+}
+
 /// The dark outline under a path coloured by speed, so it stands out over the seabed.
 pub const SPEED_OUTLINE: RGBColor = RGBColor(25, 20, 20);
 
@@ -494,20 +510,42 @@ pub fn draw_arrow_px<DB: DrawingBackend>(
     width: u32,
 ) -> Result<()> {
     let style = line(color.to_rgba(), width);
+    let Some(head) = arrow_head(from, to) else { return Ok(()) };
+    area.draw(&PathElement::new(vec![from, to], style)).map_err(plot_err)?;
+    area.draw(&Polygon::new(head.to_vec(), ShapeStyle { filled: true, ..style })).map_err(plot_err)?;
+    Ok(())
+}
+
+/// The corners of the head of an arrow from `from` to `to` (its tip first), scaled to its
+/// length; `None` for an arrow shorter than a pixel.
+fn arrow_head(from: (i32, i32), to: (i32, i32)) -> Option<[(i32, i32); 3]> {
     let (dx, dy) = ((to.0 - from.0) as f64, (to.1 - from.1) as f64);
     let len = (dx * dx + dy * dy).sqrt();
     if len < 1.0 {
-        return Ok(());
+        return None;
     }
-    area.draw(&PathElement::new(vec![from, to], style)).map_err(plot_err)?;
     let head = (len * 0.35).clamp(3.0, 7.0);
     let (ux, uy) = (dx / len, dy / len);
     let side = |s: f64| {
         let (hx, hy) = (-ux * head + s * -uy * head * 0.55, -uy * head + s * ux * head * 0.55);
         (to.0 + hx.round() as i32, to.1 + hy.round() as i32)
     };
-    area.draw(&Polygon::new(vec![to, side(1.0), side(-1.0)], ShapeStyle { filled: true, ..style }))
-        .map_err(plot_err)?;
+    Some([to, side(1.0), side(-1.0)])
+}
+
+/// A pale outline `width` pixels wide around the arrow [`draw_arrow_px`] draws from `from`
+/// to `to`, drawn first so a dark arrow stays readable over dark colours.
+pub fn draw_arrow_halo_px<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    from: (i32, i32),
+    to: (i32, i32),
+    color: impl Color,
+    width: u32,
+) -> Result<()> {
+    let Some([tip, a, b]) = arrow_head(from, to) else { return Ok(()) };
+    let style = line(color.to_rgba(), width);
+    area.draw(&PathElement::new(vec![from, to], style)).map_err(plot_err)?;
+    area.draw(&PathElement::new(vec![tip, a, b, tip, a], style)).map_err(plot_err)?;
     Ok(())
 }
 

@@ -1,7 +1,8 @@
 //! The map under every plan view: the layout that keeps the domain's aspect ratio, the axes
 //! (metres or, for a geographic world, degrees with the graticule), the seabed's shading and
-//! contours, the currents, the frame, the colour bar and the legend. What goes on the map (the
-//! plan figure's paths and obstacles, a simulation's track and routes) is drawn by the caller
+//! contours (in a world with waves, the significant wave height's shading in their place),
+//! the currents, the frame, the colour bar and the legend. What goes on the map (the plan
+//! figure's paths and obstacles, a simulation's track and routes) is drawn by the caller
 //! between the currents and the frame.
 
 use plotters::coord::Shift;
@@ -13,6 +14,7 @@ use super::colorbar::{self, ColourBar};
 use super::graticule::Graticule;
 use super::overlays::{draw_quiver, quiver_px_per_speed, scale_speed, Quiver, ARROW_CELLS};
 use super::seabed::{draw_seabed, Seabed};
+use super::waves::{draw_waves, WaveMap};
 use super::{Chart, MAX_SCALE_ARROW_PX};
 use tidepath::error::Result;
 use tidepath::world::World;
@@ -39,6 +41,8 @@ pub(crate) struct MapSpec<'a> {
     /// The region shown (metres): x0, y0, x1, y1.
     pub(super) view: (f64, f64, f64, f64),
     pub(super) seabed: Option<Seabed>,
+    /// The significant wave height, shown in place of the seabed in a world with waves.
+    pub(super) waves: Option<WaveMap>,
     pub(super) quiver: Option<Quiver>,
     /// The caption above the map; `None` leaves no room for one.
     pub(crate) caption: Option<String>,
@@ -46,7 +50,8 @@ pub(crate) struct MapSpec<'a> {
     pub(crate) legend: Vec<LegendEntry>,
     /// Whether the colour bars are drawn (a grid of small maps leaves them to one map).
     pub(crate) colorbar: bool,
-    /// A second colour bar after the seabed's (a path coloured by its speed over ground).
+    /// A second colour bar after the seabed's or the waves' (a path coloured by its speed over
+    /// ground).
     pub(crate) extra_bar: Option<ColourBar>,
 }
 
@@ -65,10 +70,12 @@ impl<'a> MapSpec<'a> {
         cells: usize,
     ) -> Self {
         let (x0, y0, x1, y1) = view;
+        let waves = WaveMap::sample(world, view, time);
         Self {
             world,
             view,
-            seabed: Seabed::sample(&world.terrain, x0, y0, x1, y1),
+            seabed: if waves.is_some() { None } else { Seabed::sample(&world.terrain, x0, y0, x1, y1) },
+            waves,
             quiver: Quiver::sample(world, time, current_z, view, cells),
             caption: None,
             legend: Vec::new(),
@@ -83,17 +90,19 @@ impl<'a> MapSpec<'a> {
         LengthUnit::for_extent((x1 - x0).max(y1 - y0))
     }
 
-    /// The colour bars to draw: the seabed's, then the extra one (taken).
+    /// The colour bars to draw: the seabed's or the waves', then the extra one (taken).
     fn take_bars(&mut self) -> Vec<ColourBar> {
         if !self.colorbar {
             return Vec::new();
         }
-        self.seabed.as_ref().map(Seabed::colour_bar).into_iter().chain(self.extra_bar.take()).collect()
+        let background =
+            self.seabed.as_ref().map(Seabed::colour_bar).or_else(|| self.waves.as_ref().map(WaveMap::colour_bar));
+        background.into_iter().chain(self.extra_bar.take()).collect()
     }
 
     fn bar_count(&self) -> u32 {
         if self.colorbar {
-            u32::from(self.seabed.is_some()) + u32::from(self.extra_bar.is_some())
+            u32::from(self.seabed.is_some() || self.waves.is_some()) + u32::from(self.extra_bar.is_some())
         } else {
             0
         }
@@ -192,9 +201,10 @@ pub(crate) fn draw_map<DB: DrawingBackend>(
         draw_degree_ticks(&chart_area, &chart, g, view, u)?;
     }
 
-    match &spec.seabed {
-        Some(s) => draw_seabed(&chart, s, u)?,
-        None => {
+    match (&spec.seabed, &spec.waves) {
+        (Some(s), _) => draw_seabed(&chart, s, u)?,
+        (None, Some(m)) => draw_waves(&chart, m, u)?,
+        (None, None) => {
             chart
                 .draw_series(std::iter::once(Rectangle::new(
                     [(x0 / u, y0 / u), (x1 / u, y1 / u)],
@@ -214,7 +224,8 @@ pub(crate) fn draw_map<DB: DrawingBackend>(
         }
     }
     if let Some(q) = &spec.quiver {
-        draw_quiver(&chart, q, u)?;
+        // Over the wave colours, whose dark end would swallow a dark arrow, each gets a halo.
+        draw_quiver(&chart, q, u, spec.waves.is_some())?;
         let len_px = (scale_speed(q.max_speed) * quiver_px_per_speed(&chart, q, u)).round() as i32;
         for e in spec.legend.iter_mut() {
             if let Swatch::ScaledArrow { len_px: l, .. } = &mut e.swatch {

@@ -1,4 +1,5 @@
-//! The plan view: seabed shading and contours, obstacles and currents at one time, and paths.
+//! The plan view: seabed shading and contours (or the significant wave height, in a world
+//! with waves), obstacles and currents at one time, and paths.
 //!
 //! The map keeps the domain's aspect ratio (a distorted map misleads about turning and about
 //! distances to obstacles), so the plot size is computed (in `map`, which every plan view
@@ -15,6 +16,7 @@ mod speed;
 #[cfg(test)]
 mod tests;
 pub(crate) mod time_ticks;
+mod waves;
 
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
@@ -29,6 +31,7 @@ use seabed::Seabed;
 use speed::{draw_speed_path, SpeedPath};
 use tidepath::error::{Error, Result};
 use tidepath::world::{Current, World};
+use waves::WaveMap;
 
 pub(crate) use map::{draw_map, map_frame, MapSpec};
 pub(crate) use obstacles::{
@@ -78,15 +81,15 @@ fn current_depth(world: &World, paths: &[PlotPath]) -> f64 {
     }
 }
 
-/// Whether the picture depends on the time it is drawn at: a current that changes with time
-/// or an obstacle that moves. Its caption then says which time it shows.
+/// Whether the picture depends on the time it is drawn at: a current or waves that change
+/// with time, or an obstacle that moves. Its caption then says which time it shows.
 pub(crate) fn time_varying(world: &World) -> bool {
     let current = match &world.current {
         Current::Jet(_) => true,
         Current::Grid(g) => !g.is_steady(),
         Current::None | Current::Uniform(_) | Current::Vortices(_) => false,
     };
-    current || world.obstacles.iter().any(obstacles::is_moving)
+    current || !world.waves.is_steady() || world.obstacles.iter().any(obstacles::is_moving)
 }
 
 /// The instant the map shows, for captions and legends: "t = 0 s (departure)".
@@ -95,7 +98,7 @@ fn shown_at(fig: &PlanFigure) -> String {
 }
 
 /// Draws the plan view (x east, y north) of `fig` with its legend and, when there is a
-/// seabed, a colour bar. Paths take colours [`style::path_color`] in order.
+/// seabed or waves, a colour bar. Paths take colours [`style::path_color`] in order.
 pub fn draw_plan_view<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &PlanFigure) -> Result<()> {
     let (world, time, paths) = (fig.world, fig.time, fig.paths.as_slice());
     let view = view_rect(fig)?;
@@ -111,8 +114,7 @@ pub fn draw_plan_view<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, fig: &P
     // thicken the outline); the map is at most the area's width, which decides it before the
     // layout, since the legend says whether it is there.
     let halos = halos_wide(world, fig.safety_distance, view, w);
-    spec.legend =
-        legend_entries(fig, spec.seabed.as_ref(), spec.quiver.as_ref(), !marks.is_empty(), halos, by_speed.as_ref());
+    spec.legend = legend_entries(fig, &Shown::of(&spec), !marks.is_empty(), halos, by_speed.as_ref());
     spec.extra_bar = by_speed.as_ref().map(SpeedPath::colour_bar);
     spec.caption =
         Some(if time_varying(world) { format!("Plan view at {}", shown_at(fig)) } else { "Plan view".to_string() });
@@ -168,10 +170,23 @@ pub(crate) fn path_entries(i: usize, p: &PlotPath) -> Vec<LegendEntry> {
 /// spacing, about 45 pixels on the widest map.
 const MAX_SCALE_ARROW_PX: i32 = 48;
 
+/// What the map under the paths shows of the world: the seabed's shading or the waves', and
+/// the current arrows.
+struct Shown<'s> {
+    seabed: Option<&'s Seabed>,
+    waves: Option<&'s WaveMap>,
+    quiver: Option<&'s Quiver>,
+}
+
+impl<'s> Shown<'s> {
+    fn of(spec: &'s MapSpec) -> Self {
+        Self { seabed: spec.seabed.as_ref(), waves: spec.waves.as_ref(), quiver: spec.quiver.as_ref() }
+    }
+}
+
 fn legend_entries(
     fig: &PlanFigure,
-    seabed: Option<&Seabed>,
-    quiver: Option<&Quiver>,
+    shown: &Shown,
     marks: bool,
     halos: bool,
     by_speed: Option<&SpeedPath>,
@@ -205,18 +220,17 @@ fn legend_entries(
     }
     let marks = marks.then_some("obstacle (dashed) and vehicle (◇) at the same time after departure");
     let when = time_varying(world).then(|| shown_at(fig));
-    out.extend(world_legend(fig, seabed, quiver, halos, marks, when));
+    out.extend(world_legend(fig, shown, halos, marks, when));
     out
 }
 
 /// The legend entries of what a map shows of `fig.world` at `fig.time`: the obstacles' kinds,
 /// their safety halo (when `halos`), moving obstacles' velocity and, when `marks` gives its
 /// text, their time marks; the current's scale arrow (saying `when`, the instant shown, for a
-/// time-varying world), the seabed's contours and the coastline.
+/// time-varying world), the seabed's contours and the coastline, or the waves' land and gaps.
 fn world_legend(
     fig: &PlanFigure,
-    seabed: Option<&Seabed>,
-    quiver: Option<&Quiver>,
+    shown: &Shown,
     halos: bool,
     marks: Option<&str>,
     when: Option<String>,
@@ -246,7 +260,7 @@ fn world_legend(
             out.push(LegendEntry::new(marks, Swatch::Diamond(style::OBSTACLE_EDGE)));
         }
     }
-    if let Some(q) = quiver {
+    if let Some(q) = shown.quiver {
         let at = if world.dims == tidepath::world::Dims::Two {
             "current".to_string()
         } else {
@@ -262,7 +276,10 @@ fn world_legend(
             Swatch::ScaledArrow { color: style::CURRENT, len_px: MAX_SCALE_ARROW_PX },
         ));
     }
-    if let Some(s) = seabed {
+    if let Some(m) = shown.waves {
+        out.extend(m.legend());
+    }
+    if let Some(s) = shown.seabed {
         if !s.levels.is_empty() {
             out.push(LegendEntry::new(
                 format!("elevation contours every {} m", style::fmt_sig(s.step)),
@@ -284,5 +301,5 @@ pub(crate) fn map_legend(
     marks: Option<&str>,
     when: Option<String>,
 ) -> Vec<LegendEntry> {
-    world_legend(fig, spec.seabed.as_ref(), spec.quiver.as_ref(), halos, marks, when)
+    world_legend(fig, &Shown::of(spec), halos, marks, when)
 }

@@ -96,7 +96,8 @@ pub(super) fn quiver_px_per_speed<DB: DrawingBackend>(chart: &Chart<DB>, q: &Qui
     }
 }
 
-pub(super) fn draw_quiver<DB: DrawingBackend>(chart: &Chart<DB>, q: &Quiver, u: f64) -> Result<()> {
+/// The current arrows, each on a pale `halo` when asked (over a colour map with dark shades).
+pub(super) fn draw_quiver<DB: DrawingBackend>(chart: &Chart<DB>, q: &Quiver, u: f64, halo: bool) -> Result<()> {
     let per_speed = quiver_px_per_speed(chart, q, u);
     if per_speed <= 0.0 {
         return Ok(());
@@ -112,6 +113,9 @@ pub(super) fn draw_quiver<DB: DrawingBackend>(chart: &Chart<DB>, q: &Quiver, u: 
         let (dx, dy) = (vx / s * len / 2.0, -vy / s * len / 2.0);
         let from = (cx - dx.round() as i32, cy - dy.round() as i32);
         let to = (cx + dx.round() as i32, cy + dy.round() as i32);
+        if halo {
+            style::draw_arrow_halo_px(&px, from, to, WHITE.mix(0.7), 3)?;
+        }
         style::draw_arrow_px(&px, from, to, style::CURRENT.mix(0.8), 1)?;
     }
     Ok(())

@@ -12,7 +12,7 @@ use tidepath::error::Result;
 use tidepath::world::Terrain;
 
 /// Raster cells across the view for shading and contours.
-const RASTER_CELLS: usize = 120;
+pub(super) const RASTER_CELLS: usize = 120;
 
 /// Seabed sampled over the view, with the derived contour levels.
 pub(super) struct Seabed {
@@ -42,20 +42,18 @@ impl Seabed {
 }
 
 /// A block of raster cells [i0, i1) x [j0, j1) of one colour.
-type Block = (usize, usize, usize, usize, RGBColor);
+pub(super) type Block = (usize, usize, usize, usize, RGBColor);
 /// A colour as a hashable key.
 type Rgb = (u8, u8, u8);
 /// A run of cells [i0, i1) of one colour within a row.
 type Run = (usize, usize, Rgb);
 
-/// Covers the raster with few rectangles: the most common colour becomes one background block
-/// and the remaining cells merge into runs along rows, then into stacks of identical runs. This
-/// keeps the SVG several times smaller than one `<rect>` per cell.
-pub(super) fn seabed_blocks(s: &Seabed) -> Vec<Block> {
+/// The colour of each raster cell of the shading: the mean of its corners, which is what the
+/// contours see.
+fn cell_colours(s: &Seabed) -> Vec<RGBColor> {
     let r = &s.raster;
     let (cx, cy) = (r.nx - 1, r.ny - 1);
-    // Each cell takes the mean of its corners, which is what the contours see.
-    let colors: Vec<RGBColor> = (0..cy)
+    (0..cy)
         .flat_map(|j| (0..cx).map(move |i| (i, j)))
         .map(|(i, j)| {
             let z = 0.25 * (r.at(i, j) + r.at(i + 1, j) + r.at(i, j + 1) + r.at(i + 1, j + 1));
@@ -65,10 +63,22 @@ pub(super) fn seabed_blocks(s: &Seabed) -> Vec<Block> {
                 style::NO_TERRAIN_BG
             }
         })
-        .collect();
+        .collect()
+}
+
+/// The seabed's shading as blocks of one colour ([`colour_blocks`]).
+pub(super) fn seabed_blocks(s: &Seabed) -> Vec<Block> {
+    colour_blocks(&cell_colours(s), s.raster.nx - 1, s.raster.ny - 1)
+}
+
+/// Covers a grid of `cx` x `cy` cells coloured `colors` (row-major, south row first) with few
+/// rectangles: the most common colour becomes one background block and the remaining cells
+/// merge into runs along rows, then into stacks of identical runs. This keeps the SVG several
+/// times smaller than one `<rect>` per cell. Shared by every shaded map (seabed, waves).
+pub(super) fn colour_blocks(colors: &[RGBColor], cx: usize, cy: usize) -> Vec<Block> {
     let key = |c: RGBColor| -> Rgb { (c.0, c.1, c.2) };
     let mut counts: HashMap<Rgb, usize> = HashMap::new();
-    for &c in &colors {
+    for &c in colors {
         *counts.entry(key(c)).or_default() += 1;
     }
     let background = colors.iter().copied().max_by_key(|&c| (counts[&key(c)], key(c))).unwrap_or(style::NO_TERRAIN_BG);
@@ -98,14 +108,27 @@ pub(super) fn seabed_blocks(s: &Seabed) -> Vec<Block> {
     blocks
 }
 
-pub(super) fn draw_seabed<DB: DrawingBackend>(chart: &Chart<DB>, s: &Seabed, u: f64) -> Result<()> {
-    let r = &s.raster;
+/// Draws `blocks` of raster cells, cell (i, j) spanning [x0 + i dx, x0 + (i + 1) dx] x
+/// [y0 + j dy, y0 + (j + 1) dy] metres, on a chart in units of `u` metres.
+pub(super) fn draw_blocks<DB: DrawingBackend>(
+    chart: &Chart<DB>,
+    blocks: &[Block],
+    (x0, y0, dx, dy): (f64, f64, f64, f64),
+    u: f64,
+) -> Result<()> {
     let plot = chart.plotting_area();
-    for (i0, i1, j0, j1, c) in seabed_blocks(s) {
-        let a = ((r.x0 + r.dx * i0 as f64) / u, (r.y0 + r.dy * j0 as f64) / u);
-        let b = ((r.x0 + r.dx * i1 as f64) / u, (r.y0 + r.dy * j1 as f64) / u);
+    for &(i0, i1, j0, j1, c) in blocks {
+        let a = ((x0 + dx * i0 as f64) / u, (y0 + dy * j0 as f64) / u);
+        let b = ((x0 + dx * i1 as f64) / u, (y0 + dy * j1 as f64) / u);
         plot.draw(&Rectangle::new([a, b], style::fill(c))).map_err(plot_err)?;
     }
+    Ok(())
+}
+
+pub(super) fn draw_seabed<DB: DrawingBackend>(chart: &Chart<DB>, s: &Seabed, u: f64) -> Result<()> {
+    let r = &s.raster;
+    draw_blocks(chart, &seabed_blocks(s), (r.x0, r.y0, r.dx, r.dy), u)?;
+    let plot = chart.plotting_area();
 
     let scaled = |line: Vec<(f64, f64)>| line.into_iter().map(|(x, y)| (x / u, y / u)).collect::<Vec<_>>();
     for &level in &s.levels {

@@ -3,6 +3,11 @@
 //! current helps (fast) and where it hinders (slow). The speed of each segment of the drawn
 //! line (the flown curve when there is one) is its length (horizontal and vertical) over the
 //! time between its ends on the path's own clock.
+//!
+//! The clock is the validator's (the plan's arrival times), not the through-water speed plus
+//! the current, so the colouring holds for any propulsion: a wave glider's speed over ground
+//! follows the waves and the current (acopf2016 eqs. 1-2) and shows the same way. A glider has
+//! no speed through still water, so its bar has no mark.
 
 use plotters::prelude::*;
 
@@ -27,6 +32,19 @@ pub(super) fn round_ticks(lo: f64, hi: f64) -> (Vec<f64>, f64) {
     }
     let ticks = ((lo / step).floor() as i64 + 1..).map(|k| k as f64 * step).take_while(|&v| v < hi).filter(|&v| v > lo);
     (ticks.collect(), step)
+}
+
+/// Ticks of a colour bar from `lo` to `hi` and the step their labels are written at: round
+/// values ([`round_ticks`]), or the ends when the range holds fewer than two.
+pub(super) fn bar_ticks(lo: f64, hi: f64) -> (Vec<f64>, f64) {
+    let (ticks, step) = round_ticks(lo, hi);
+    if ticks.len() >= 2 {
+        return (ticks, step);
+    }
+    // Three significant digits: "1.54", not a step's worth of decimals of a range too narrow
+    // for round values.
+    let ends = if hi > lo { vec![lo, hi] } else { vec![lo] };
+    (ends, 10f64.powf(hi.abs().max(1e-9).log10().floor() - 2.0))
 }
 
 /// The path coloured by speed: its drawn line and each segment's speed over ground.
@@ -65,11 +83,12 @@ pub(crate) fn segment_speeds(line: &[Vec3], times: &[f64]) -> Vec<f64> {
 }
 
 impl<'a> SpeedPath<'a> {
-    /// The path `fig.speed_path` names, when the world has a current and the path's drawn
-    /// line is finite and has a time at every point giving at least one speed.
+    /// The path `fig.speed_path` names, when the world has a current or waves (which set a
+    /// wave glider's speed) and the path's drawn line is finite and has a time at every point
+    /// giving at least one speed.
     pub(crate) fn of(fig: &PlanFigure<'a>) -> Option<Self> {
         let index = fig.speed_path?;
-        if matches!(fig.world.current, Current::None) {
+        if matches!(fig.world.current, Current::None) && fig.world.waves.is_none() {
             return None;
         }
         let path = fig.paths.get(index)?;
@@ -108,13 +127,7 @@ impl<'a> SpeedPath<'a> {
     /// the range holds fewer than two), the still-water speed marked.
     pub(crate) fn colour_bar(&self) -> ColourBar {
         let (lo, hi) = (self.lo, self.hi);
-        let (mut ticks, mut step) = round_ticks(lo, hi);
-        if ticks.len() < 2 {
-            // Three significant digits: "1.54", not a step's worth of decimals of a range
-            // too narrow for round values.
-            ticks = if hi > lo { vec![lo, hi] } else { vec![lo] };
-            step = 10f64.powf(hi.abs().max(1e-9).log10().floor() - 2.0);
-        }
+        let (ticks, step) = bar_ticks(lo, hi);
         ColourBar {
             title: "speed over ground (m/s)".to_string(),
             lo,

@@ -76,3 +76,21 @@ fn a_path_at_one_speed_gets_a_bar_labelled_at_that_speed() {
     assert_eq!(labels, ["1.50"]);
     assert!(sp.legend_label("p").label.ends_with("(faster throughout than its 1.2 m/s through still water)"));
 }
+
+#[test]
+fn a_uniform_sea_gets_one_colour_and_a_bar_labelled_at_its_height() {
+    use super::waves::WaveMap;
+    use tidepath::geom::Aabb;
+    use tidepath::world::Waves;
+    let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -50.0), Vec3::new(1_000.0, 500.0, 0.0)));
+    assert!(WaveMap::sample(&w, (0.0, 0.0, 1_000.0, 500.0), 0.0).is_none(), "a map without waves");
+    w.waves = Waves::Uniform(1.2);
+    let m = WaveMap::sample(&w, (0.0, 0.0, 1_000.0, 500.0), 0.0).unwrap();
+    assert_eq!((m.lo, m.hi), (1.2, 1.2));
+    // Nothing to tell apart: the middle of the palette, no land or gap in the legend.
+    assert_eq!(m.color(1.2), style::wave_color(0.5, 0.0, 1.0));
+    assert!(m.legend().is_empty());
+    let bar = m.colour_bar();
+    let labels: Vec<String> = bar.ticks.iter().map(|&v| style::fmt_num(v, bar.step)).collect();
+    assert_eq!((bar.title.as_str(), labels), ("significant wave height (m)", vec!["1.20".to_string()]));
+}
