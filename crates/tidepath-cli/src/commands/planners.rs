@@ -71,7 +71,9 @@ pub fn list(args: &PlannersArgs) -> Result<Outcome, Error> {
         &tidepath::repair::registry(),
         args.params,
     );
-    if !args.params {
+    if args.params {
+        println!("`tidepath vehicles` lists the vehicle kinds and their speed models ([vehicle] keys).");
+    } else {
         println!("`tidepath planners --params` lists every parameter with its range and default.");
     }
     Ok(Outcome::Success)

@@ -20,6 +20,8 @@
 //!   glider backwards (the regression is not positive with a head current), it cannot hold
 //!   the track: the piece is flagged like a current the thrusters cannot stem.
 
+use crate::params::{Bound, ParamSpec, Range};
+
 /// Coefficients of the regression and the floor.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GliderSpeed {
@@ -38,6 +40,35 @@ impl Default for GliderSpeed {
 }
 
 impl GliderSpeed {
+    /// The scenario keys of the model (`[vehicle]` of a `kind = "wave-glider"`), declared
+    /// once for listings (`tidepath vehicles`) and checks: name, range, default and source.
+    pub const PARAMS: &'static [ParamSpec] = &[
+        ParamSpec {
+            name: "wave_gain",
+            range: Range::Number { lo: Bound::Open(0.0), hi: Bound::Unbounded },
+            optional: false,
+            default: || Some(toml::Value::Float(GliderSpeed::default().wave_gain)),
+            doc: "m/s of speed over ground per metre of significant wave height",
+            source: "acopf2016 eq. 1 (Ngo et al.'s regression)",
+        },
+        ParamSpec {
+            name: "current_gain",
+            range: Range::Number { lo: Bound::Closed(0.0), hi: Bound::Unbounded },
+            optional: false,
+            default: || Some(toml::Value::Float(GliderSpeed::default().current_gain)),
+            doc: "m/s of speed over ground per m/s of current along the heading (following > 0)",
+            source: "acopf2016 eq. 1 (eq. 2's 0.2260 read as a misprint)",
+        },
+        ParamSpec {
+            name: "min_speed",
+            range: Range::Number { lo: Bound::Open(0.0), hi: Bound::Unbounded },
+            optional: false,
+            default: || Some(toml::Value::Float(GliderSpeed::default().min_speed)),
+            doc: "the slowest speed over ground (m/s), in calm water or a head current",
+            source: "tidepath (the regression has no intercept)",
+        },
+    ];
+
     /// Speed over ground (m/s) in waves of significant height `wave_height` (m) with the
     /// current's component along the heading `current_along` (m/s, positive following);
     /// `None` when a head current drives the glider backwards (it cannot hold the track).
@@ -88,5 +119,19 @@ mod tests {
         // The bound: 3 m and 1 m/s: 0.4869 + 0.266 = 0.7529.
         assert!((g.best_speed(3.0, 1.0) - 0.7529).abs() < 1e-12);
         assert!(g.formula().contains("0.1623 H"));
+    }
+
+    #[test]
+    fn declared_keys_give_the_defaults_and_refuse_what_stalls_the_clock() {
+        let d = GliderSpeed::default();
+        let default = |k: usize| (GliderSpeed::PARAMS[k].default)().and_then(|v| v.as_float());
+        let names: Vec<&str> = GliderSpeed::PARAMS.iter().map(|p| p.name).collect();
+        assert_eq!(names, ["wave_gain", "current_gain", "min_speed"]);
+        assert_eq!([default(0), default(1), default(2)], [Some(d.wave_gain), Some(d.current_gain), Some(d.min_speed)]);
+        // A zero floor would let a calm sea stop the clock; a zero current gain is a glider
+        // the current does not push, which is allowed.
+        assert!(GliderSpeed::PARAMS[2].range.check_number(0.0).is_err());
+        assert!(GliderSpeed::PARAMS[1].range.check_number(0.0).is_ok());
+        assert_eq!(GliderSpeed::PARAMS[0].range.to_string(), "in (0, inf)");
     }
 }
