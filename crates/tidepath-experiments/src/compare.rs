@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use super::record::MissionRecord;
 use super::runner::{execute, tasks, RunControl, Task};
+use super::shard::Share;
 use super::table::{rows_for, PlannerRow};
 use super::RunRecord;
 use tidepath::error::{Error, Result};
@@ -280,6 +281,22 @@ pub fn compare_scenario(
     control: RunControl<'_>,
     reference: Option<&str>,
 ) -> Result<Comparison> {
+    compare_share(scenario, planners, runs, master_seed, budget, control, reference, None)
+}
+
+/// [`compare_scenario`], or with `share` only that share of its runs (`compare --shard`, see
+/// [`crate::shard`]): the comparison of those runs; share 1 runs the reference.
+#[allow(clippy::too_many_arguments)]
+pub fn compare_share(
+    scenario: &Scenario,
+    planners: &[String],
+    runs: u64,
+    master_seed: u64,
+    budget: &RunBudget,
+    control: RunControl<'_>,
+    reference: Option<&str>,
+    share: Option<Share>,
+) -> Result<Comparison> {
     check_planners(planners)?;
     check_size(1, planners.len(), runs)?;
     // Fail on a bad planner id or parameter before any run starts.
@@ -290,24 +307,36 @@ pub fn compare_scenario(
     }
     scenario.termination(&request(budget, "", 0))?;
     let problems = vec![scenario.name.clone()];
-    let all = tasks(master_seed, &problems, planners, runs);
+    let mut all = tasks(master_seed, &problems, planners, runs);
+    if let Some(s) = share {
+        if s.n > all.len() as u64 {
+            return Err(Error::input("--shard", format!("'{s}' asks for more shares than the {} runs", all.len())));
+        }
+        all = s.select(all);
+    }
     let start = Instant::now();
     let stop = control.stop.cloned();
     let records = execute(&all, control, |t| scenario_run(scenario, budget, t, stop.clone()))?;
     let mut c = finish("scenario", problems, planners, runs, master_seed, budget, records, start);
     c.smoother = effective_smoother(scenario, budget);
     c.reference_planner = reference.map(str::to_string);
-    if let (Some(id), true) = (reference, c.complete) {
-        c.reference = run_reference(scenario, id, master_seed, budget, stop)?;
-        if let Some(r) = &c.reference {
-            // Over feasible runs only: an infeasible path's cost is mostly penalty.
-            for row in &mut c.rows {
-                row.gap_percent = row.feasible_mean.map(|m| gap_percent(m, r.cost));
-                row.best_gap_percent = row.feasible_best.map(|b| gap_percent(b, r.cost));
-            }
-        }
+    if let (Some(id), true, true) = (reference, c.complete, share.is_none_or(|s| s.k == 1)) {
+        let r = run_reference(scenario, id, master_seed, budget, stop)?;
+        set_reference(&mut c, r);
     }
     Ok(c)
+}
+
+/// Sets the comparison's reference and the rows' gaps to it.
+pub(crate) fn set_reference(c: &mut Comparison, reference: Option<Reference>) {
+    c.reference = reference;
+    if let Some(r) = &c.reference {
+        // Over feasible runs only: an infeasible path's cost is mostly penalty.
+        for row in &mut c.rows {
+            row.gap_percent = row.feasible_mean.map(|m| gap_percent(m, r.cost));
+            row.best_gap_percent = row.feasible_best.map(|b| gap_percent(b, r.cost));
+        }
+    }
 }
 
 /// The smoother the compared runs use: the one asked for, else the scenario's (with its

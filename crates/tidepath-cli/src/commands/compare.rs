@@ -2,9 +2,10 @@ use std::path::PathBuf;
 
 use clap::Args;
 use tidepath::Error;
-use tidepath_experiments::compare::{compare_scenario, default_reference, request, RunBudget, Smoothing};
+use tidepath_experiments::compare::{compare_share, default_reference, request, Comparison, RunBudget, Smoothing};
 use tidepath_experiments::output;
 use tidepath_experiments::runner::RunControl;
+use tidepath_experiments::shard::{ShardFile, ShardInfo, Share};
 use tidepath_io::scenario;
 use tidepath_io::Outputs;
 
@@ -38,12 +39,23 @@ pub struct CompareArgs {
     #[arg(long)]
     pub reference: Option<String>,
     /// Also write an OMPL benchmark log (load it with `ompl_benchmark_statistics`).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "shard")]
     pub ompl_log: Option<PathBuf>,
+    /// Run only the K-th of N shares of the runs (run i goes to share (i mod N) + 1; seeds as
+    /// without it) and write just results.json to --out; `tidepath merge` joins the N folders
+    /// into what one compare writes. For cluster job arrays.
+    #[arg(long, value_name = "K/N", requires = "out")]
+    pub shard: Option<String>,
 }
 
 pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
-    let mut scenario = scenario::load(&args.scenario)?;
+    let share = args.shard.as_deref().map(Share::parse).transpose()?;
+    // A shard records where its scenario is, for `merge` to draw it from any folder.
+    let source = match share {
+        Some(_) if scenario::builtin(&args.scenario).is_none() => absolute(&args.scenario),
+        _ => args.scenario.clone(),
+    };
+    let mut scenario = scenario::load(&source)?;
     args.repairing.apply(&mut scenario.encoding)?;
     let jobs = crate::jobs(args.run.jobs)?;
     tidepath_experiments::compare::check_runs(args.runs)?;
@@ -68,20 +80,30 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     }
     let figures = tidepath_plot::ExperimentFigures;
     let mut outputs = Outputs::new();
+    // A shard writes only results.json (see `tidepath_experiments::shard`).
     if let Some(dir) = &args.out {
-        output::declare_results(&mut outputs, "--out", dir, &figures, true)?;
+        match share {
+            None => output::declare_results(&mut outputs, "--out", dir, &figures, true)?,
+            Some(_) => {
+                outputs.declare_in("--out", dir, "results.json")?;
+            }
+        }
     }
     let ompl_id = args.ompl_log.as_deref().map(|p| outputs.declare("--ompl-log", p)).transpose()?;
 
-    let total = args.planners.len() * args.runs as usize;
+    let all = args.planners.len() * args.runs as usize;
+    let total = share.map_or(all, |s| s.size(all));
     let bar = RunsBar::new("compare", total);
     let stop = crate::stop_flag();
     let on_done = |n| bar.set(n);
     let control = RunControl { jobs, stop: Some(&stop), on_done: &on_done };
-    let result =
-        compare_scenario(&scenario, &args.planners, args.runs, args.run.seed, &budget, control, reference.as_deref());
+    let (planners, seed) = (&args.planners, args.run.seed);
+    let result = compare_share(&scenario, planners, args.runs, seed, &budget, control, reference.as_deref(), share);
     bar.finish();
     let c = result?;
+    if let (Some(share), Some(dir)) = (share, &args.out) {
+        return write_shard(outputs, dir, share, c, &scenario);
+    }
     if let Some(dir) = &args.out {
         output::stage_results(&mut outputs, "--out", dir, &c, Some(&scenario), &figures)?;
     }
@@ -102,5 +124,36 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
             dir.display()
         );
     }
+    Ok(if c.complete { Outcome::Success } else { Outcome::Interrupted })
+}
+
+/// `path` made absolute (as given when it cannot be resolved: loading it then says why).
+fn absolute(path: &str) -> String {
+    std::fs::canonicalize(path).map_or_else(|_| path.to_string(), |p| p.display().to_string())
+}
+
+/// Writes a shard's results.json (its comparison and `shard` block) into `dir` and says so.
+fn write_shard(
+    mut outputs: Outputs,
+    dir: &std::path::Path,
+    share: Share,
+    c: Comparison,
+    scenario: &scenario::Scenario,
+) -> Result<Outcome, Error> {
+    let file = ShardFile { shard: Some(ShardInfo::new(share, &c, scenario)), comparison: c };
+    outputs.stage_in("--out", dir, "results.json", file.json().as_bytes())?;
+    outputs.commit()?;
+    let c = &file.comparison;
+    println!(
+        "{} — shard {share}: {} of {} runs, master seed {}, {:.1} s\nWrote {}; join the {} shards with \
+         `tidepath merge DIR... --out OUT`",
+        scenario.name,
+        c.finished_runs,
+        share.size(c.planned_runs()),
+        c.master_seed,
+        c.total_wall_s,
+        dir.join("results.json").display(),
+        share.n
+    );
     Ok(if c.complete { Outcome::Success } else { Outcome::Interrupted })
 }
