@@ -11,6 +11,7 @@ pub mod output;
 pub mod record;
 pub mod reproduce;
 pub mod runner;
+pub mod shard;
 pub mod stats;
 pub mod table;
 
