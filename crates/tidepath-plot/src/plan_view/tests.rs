@@ -94,3 +94,21 @@ fn a_uniform_sea_gets_one_colour_and_a_bar_labelled_at_its_height() {
     let labels: Vec<String> = bar.ticks.iter().map(|&v| style::fmt_num(v, bar.step)).collect();
     assert_eq!((bar.title.as_str(), labels), ("significant wave height (m)", vec!["1.20".to_string()]));
 }
+
+#[test]
+fn the_wave_bar_is_labelled_at_round_heights_and_its_round_ends() {
+    use super::waves::WaveMap;
+    use tidepath::geom::Aabb;
+    use tidepath::world::waves::WaveGrid;
+    use tidepath::world::{RegularGrid2, Waves};
+    let mut w = World::open(Aabb::new(Vec3::new(0.0, 0.0, -50.0), Vec3::new(1_000.0, 500.0, 0.0)));
+    let g = RegularGrid2::new(0.0, 0.0, 1_000.0, 500.0, 2, 2, "w").unwrap();
+    w.waves = Waves::Grid(WaveGrid::new(g, vec![0.0], vec![vec![0.5, 2.0, 0.5, 2.0]], "w").unwrap());
+    let bar = WaveMap::sample(&w, (0.0, 0.0, 1_000.0, 500.0), 0.0).unwrap().colour_bar();
+    // 0.5 to 2 m: steps of 0.5 inside, and both ends are multiples of it.
+    let labels: Vec<String> = bar.ticks.iter().map(|&v| style::fmt_num(v, bar.step)).collect();
+    assert_eq!(labels, ["0.5", "1.0", "1.5", "2.0"]);
+    // West is calm, east is high: the palette's ends.
+    assert_eq!((bar.colour)(0.5), style::wave_color(0.0, 0.0, 1.0));
+    assert_eq!((bar.colour)(2.0), style::wave_color(1.0, 0.0, 1.0));
+}

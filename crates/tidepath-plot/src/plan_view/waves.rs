@@ -85,11 +85,17 @@ impl WaveMap {
         self.cells.contains(&kind)
     }
 
-    /// The colour bar of the map, labelled at round heights (its ends when the range holds
-    /// fewer than two).
+    /// The colour bar of the map, labelled at round heights, its ends too when they are
+    /// round (a field of 0.5 to 2 m reads "0.5 1.0 1.5 2.0"); at its ends when the range holds
+    /// fewer than two round heights.
     pub(crate) fn colour_bar(&self) -> ColourBar {
         let (lo, hi) = (self.lo, self.hi);
-        let (ticks, step) = bar_ticks(lo, hi);
+        let (mut ticks, step) = bar_ticks(lo, hi);
+        let round = |v: f64| ((v / step).round() * step - v).abs() <= 1e-9 * step;
+        if ticks.len() >= 2 && !ticks.contains(&lo) {
+            ticks.extend([lo, hi].into_iter().filter(|&v| round(v)));
+            ticks.sort_by(f64::total_cmp);
+        }
         ColourBar {
             title: "significant wave height (m)".to_string(),
             lo,
