@@ -363,3 +363,28 @@ fn waves_glider_and_cells_survive_a_round_trip() {
     let auv = toml::to_string(&tidepath_io::scenario::spec::VehicleSpec::default()).unwrap();
     assert!(!auv.contains("kind"), "{auv}");
 }
+
+/// The reader alone: times decoded from each file's units, the height at the nodes exactly
+/// (float32 of the formula), land as NaN, the variable found by standard name or by name.
+#[test]
+fn the_wave_reader_decodes_times_values_and_land() {
+    use tidepath_io::geodata::waves::read_waves;
+    use tidepath_io::geodata::DataFile;
+    let file = |n: &str| DataFile::Path(PathBuf::from(data(n)));
+    let c = read_waves(&file("waves_copernicus.nc"), None, None, 1).unwrap();
+    assert_eq!(c.variable, "VHM0");
+    let hours: Vec<i64> = c.times.iter().map(|t| (*t - c.times[0]).num_hours()).collect();
+    assert_eq!((c.times[0].to_rfc3339().as_str(), hours), ("2025-11-12T00:00:00+00:00", vec![0, 3, 6]));
+    let g = &c.height[2];
+    assert_eq!((g.lon.len(), g.lat.len()), (6, 5));
+    // Node (lon -124.8, lat 48.1) at 6 h: 1 + 0.4 + 0.6 = 2.0 m.
+    assert!(close(g.values[6 + 2], 2.0, 1e-6), "{}", g.values[8]);
+    let nan: Vec<usize> = (0..30).filter(|&k| g.values[k].is_nan()).collect();
+    assert_eq!(nan, [22, 23, 28, 29], "the north-east 2 x 2 nodes are land");
+    let w = read_waves(&file("waves_ww3.nc"), None, None, 1).unwrap();
+    assert_eq!((w.variable.as_str(), w.times.len()), ("hs", 2));
+    assert_eq!(w.times[1] - w.times[0], chrono::Duration::hours(6));
+    // Rows south first and longitudes in -180..180 whatever the file's order.
+    assert!(close(w.height[0].lon[0], -125.0, 1e-9) && close(w.height[0].lat[0], 48.0, 1e-9));
+    assert!(close(w.height[1].values[5], fixture_height(-124.5, 6.0), 1e-6));
+}
