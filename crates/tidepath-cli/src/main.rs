@@ -31,6 +31,8 @@ enum Command {
     Scenario(commands::scenarios::ShowArgs),
     /// List planners, encodings, cost models and smoothers with their papers and parameters.
     Planners(commands::planners::PlannersArgs),
+    /// List the vehicle kinds with their speed models (the wave glider's regression).
+    Vehicles,
     /// Plan a route on a scenario and print a summary.
     Plan(commands::plan::PlanArgs),
     /// Fly a mission while the world changes (`[[changes]]`), re-planning a window of the route
@@ -40,6 +42,9 @@ enum Command {
     Eval(commands::eval::EvalArgs),
     /// Compare planners over many seeded runs: statistics, rank-sum marks, plots.
     Compare(commands::compare::CompareArgs),
+    /// Join the folders of `compare --shard K/N` (a cluster job array) into what one compare
+    /// writes: results.json, tables and figures.
+    Merge(commands::merge::MergeArgs),
     /// Benchmark optimizers on the standard test functions.
     Bench(commands::bench::BenchArgs),
     /// Rerun a paper's experiments and set our numbers beside the paper's in REPORT.md.
@@ -145,10 +150,12 @@ fn main() -> ExitCode {
         Command::Scenarios => commands::scenarios::list(),
         Command::Scenario(args) => commands::scenarios::show(&args),
         Command::Planners(args) => commands::planners::list(&args),
+        Command::Vehicles => commands::vehicles::list(),
         Command::Plan(args) => commands::plan::run(&args),
         Command::Simulate(args) => commands::simulate::run(&args),
         Command::Eval(args) => commands::eval::run(&args),
         Command::Compare(args) => commands::compare::run(&args),
+        Command::Merge(args) => commands::merge::run(&args),
         Command::Bench(args) => commands::bench::run(&args),
         Command::Reproduce(args) => commands::reproduce::run(&args),
     };

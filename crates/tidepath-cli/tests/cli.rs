@@ -30,6 +30,10 @@ mod no_route;
 mod numbers;
 #[path = "cli/repair.rs"]
 mod repair;
+#[path = "cli/shard.rs"]
+mod shard;
+#[path = "cli/vehicles.rs"]
+mod vehicles;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -268,7 +272,19 @@ fn nan_and_inf_are_rejected_anywhere() {
 
 #[test]
 fn every_subcommand_has_help() {
-    for sub in ["scenarios", "scenario", "planners", "plan", "eval", "compare", "bench", "reproduce"] {
+    for sub in [
+        "scenarios",
+        "scenario",
+        "planners",
+        "vehicles",
+        "plan",
+        "simulate",
+        "eval",
+        "compare",
+        "merge",
+        "bench",
+        "reproduce",
+    ] {
         let o = tidepath(&[sub, "--help"], &[]);
         assert_eq!(o.status.code(), Some(0), "{sub} --help");
         assert!(String::from_utf8_lossy(&o.stdout).contains("Usage"), "{sub}");

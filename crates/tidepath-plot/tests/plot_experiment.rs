@@ -15,6 +15,8 @@ mod plot_smoke;
 mod plot_speed;
 #[path = "plot/plot_time_ticks.rs"]
 mod plot_time_ticks;
+#[path = "plot/plot_waves.rs"]
+mod plot_waves;
 
 use tidepath::geom::{Aabb, Vec2, Vec3};
 use tidepath::world::terrain::{GaussianPeaks, Peak};
