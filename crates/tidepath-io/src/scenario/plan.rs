@@ -325,7 +325,12 @@ impl Scenario {
             scenario: self.name.clone(),
             scenario_source: self.source.clone(),
             cost_model: cost.id().to_string(),
-            travel_time_model: self.settings.travel.id().to_string(),
+            // A wave glider's clock is its speed regression, whatever `[model] travel` says.
+            travel_time_model: if self.missions.iter().all(|m| m.vehicle.glider().is_some()) {
+                "wave-glider".to_string()
+            } else {
+                self.settings.travel.id().to_string()
+            },
             time_limit_s: termination.wall_time.map(|d| d.as_secs_f64()),
             default_time_cap: limit_source == LimitSource::DefaultCap,
             warm_start: req.init.is_some(),
