@@ -336,6 +336,28 @@ fn runs_are_deterministic() {
     assert_eq!((c.stats.iterations, c.stats.stop_reason), (4, StopReason::MaxIterations));
 }
 
+/// In a world that changes in time (here only a disc moving far outside the domain) moves
+/// are priced at every step and the environment factor is taken at the ant's clock: with
+/// uniform waves and current both give what the precomputed tables give, so the same path.
+#[test]
+fn a_changing_world_is_priced_at_the_ants_clock() {
+    let mut w = world_2d(2000.0, 1000.0);
+    wall(&mut w, (950.0, 0.0), (1050.0, 700.0));
+    w.waves = Waves::Uniform(1.5);
+    w.current = Current::Uniform(Vec3::new(0.2, 0.1, 0.0));
+    let m = Mission::new("m", vehicle(PI), Vec3::new(150.0, 150.0, 0.0), Vec3::new(1850.0, 150.0, 0.0), 0.0);
+    let steady = run(&mut colony("acopf", "cells = 40"), &w, &m, Termination::iterations(8), 4);
+    let far = Shape::Circle { center: Vec2::new(-5000.0, -5000.0), radius: 10.0 };
+    w.obstacles.push(Obstacle::moving(far, Vec3::new(-1.0, 0.0, 0.0)));
+    let moving = run(&mut colony("acopf", "cells = 40"), &w, &m, Termination::iterations(8), 4);
+    assert_eq!(steady.status, Status::Feasible, "{}", steady.reason);
+    assert_eq!(steady.missions[0].waypoints, moving.missions[0].waypoints);
+    assert_eq!(steady.stats.expansions, moving.stats.expansions);
+    // Every step priced anew, against each edge once.
+    assert!(moving.stats.motion_checks >= moving.stats.expansions - 8 * 30);
+    assert!(steady.stats.motion_checks <= steady.stats.graph_edges);
+}
+
 /// Budgets: a raised stop flag cancels before any step; an expansion limit bounds the ant
 /// steps; a 3-D world is refused with one line.
 #[test]
