@@ -112,6 +112,10 @@ impl Graph {
         self.blocked.len()
     }
 
+    pub fn is_empty(&self) -> bool {
+        self.blocked.is_empty()
+    }
+
     /// Metres per cell in the heuristic's distances: the mean cell edge.
     pub fn unit(&self) -> f64 {
         0.5 * (self.dx + self.dy)

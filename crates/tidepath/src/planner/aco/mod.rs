@@ -57,9 +57,9 @@
 //!   first pricing (the same answer; most of a run's time otherwise).
 //! * Unstated constants (A7): α = 1, β = 5, ξ = 1, μ = 10, L_0 = 2 cells, ς = σ = ω = 1.
 
-mod colony;
-mod heuristic;
-mod pheromone;
+pub mod colony;
+pub mod heuristic;
+pub mod pheromone;
 #[cfg(test)]
 mod tests;
 

@@ -38,6 +38,10 @@ impl Tours {
         self.spans.len()
     }
 
+    pub fn is_empty(&self) -> bool {
+        self.spans.is_empty()
+    }
+
     /// Tour k's edges and length.
     pub fn get(&self, k: usize) -> (&[u32], f64) {
         let (s, e, l) = self.spans[k];
