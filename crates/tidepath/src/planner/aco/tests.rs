@@ -430,15 +430,22 @@ fn acopf_timing() {
     wall(&mut w, (9000.0, 0.0), (11000.0, 14000.0));
     w.waves = Waves::Uniform(2.0);
     let m = Mission::new("m", vehicle(PI), Vec3::new(500.0, 500.0, 0.0), Vec3::new(19500.0, 19500.0, 0.0), 0.0);
-    for cells in [20, 200] {
-        let t = std::time::Instant::now();
-        let plan = run(&mut colony("acopf", &format!("cells = {cells}")), &w, &m, Termination::iterations(60), 1);
-        eprintln!(
-            "{cells} x {cells}: {:?}, {} steps, {} priced, {}",
-            t.elapsed(),
-            plan.stats.expansions,
-            plan.stats.motion_checks,
-            plan.status
-        );
+    // Then in a world that changes in time (a disc moving far away): every step priced.
+    for changing in [false, true] {
+        if changing {
+            let far = Shape::Circle { center: Vec2::new(-5000.0, -5000.0), radius: 10.0 };
+            w.obstacles.push(Obstacle::moving(far, Vec3::new(-1.0, 0.0, 0.0)));
+        }
+        for cells in [20, 200] {
+            let t = std::time::Instant::now();
+            let plan = run(&mut colony("acopf", &format!("cells = {cells}")), &w, &m, Termination::iterations(60), 1);
+            eprintln!(
+                "{cells} x {cells} (changing {changing}): {:?}, {} steps, {} priced, {}",
+                t.elapsed(),
+                plan.stats.expansions,
+                plan.stats.motion_checks,
+                plan.status
+            );
+        }
     }
 }
