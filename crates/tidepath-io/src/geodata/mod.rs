@@ -7,6 +7,7 @@ pub mod currents;
 pub mod esri_ascii;
 pub mod geotiff;
 pub mod netcdf;
+pub mod waves;
 
 use std::path::{Path, PathBuf};
 
@@ -44,6 +45,8 @@ pub const EMBEDDED: &[(&str, &[u8])] = &[
     ("salish_topobathy.nc", include_bytes!("../../data/salish_topobathy.nc")),
     ("salish_forecast.nc", include_bytes!("../../data/salish_forecast.nc")),
     ("salish_forecast_update.nc", include_bytes!("../../data/salish_forecast_update.nc")),
+    ("glider_ocean.nc", include_bytes!("../../data/glider_ocean.nc")),
+    ("glider_ocean_topo.nc", include_bytes!("../../data/glider_ocean_topo.nc")),
 ];
 
 /// Refuses a file of no bytes in one line that says so (rather than a format's complaint

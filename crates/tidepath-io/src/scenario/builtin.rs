@@ -184,6 +184,41 @@ pub const BUILTIN: &[Entry<&str>] = &[
         params: &[],
         build: include_str!("../../scenarios/ijs-fleet.toml"),
     },
+    Entry {
+        id: "glider-1",
+        description: "2-D: acopf2016's environment 1, a wave glider on a 20 x 20 grid map of 1 km cells in 2 m waves, no current: two optimal paths of equal length",
+        citation: "Gao et al. 2016 (acopf2016), section 4, environment 1 (Fig. 3); obstacle layout and cell size ours (scripts/make_acopf2016_scenarios.py)",
+        params: &[],
+        build: include_str!("../../scenarios/glider-1.toml"),
+    },
+    Entry {
+        id: "glider-2",
+        description: "2-D: acopf2016's environment 2, 2 m waves up to x = 10 km falling to 0.5 m at x = 20 km, no current: the quickest route keeps to the larger waves",
+        citation: "Gao et al. 2016 (acopf2016), section 4, environment 2 (Fig. 4); wave heights ours (scripts/make_acopf2016_scenarios.py)",
+        params: &[],
+        build: include_str!("../../scenarios/glider-2.toml"),
+    },
+    Entry {
+        id: "glider-3",
+        description: "2-D: acopf2016's environment 3, glider-2's waves and a 0.5 m/s south-east current in {10 < x <= 20, 8 <= y <= 16} km: the quickest route rides it",
+        citation: "Gao et al. 2016 (acopf2016), section 4, environment 3 (Fig. 5); wave heights and current speed ours (scripts/make_acopf2016_scenarios.py)",
+        params: &[],
+        build: include_str!("../../scenarios/glider-3.toml"),
+    },
+    Entry {
+        id: "glider-4",
+        description: "2-D: a wave glider on acopf2016's grid map in a north-west swell and a clockwise eddy: the short route meets a head current, the long one rides the eddy",
+        citation: "tidepath's design (acopf2016 mentions a fourth environment without describing it; scripts/make_acopf2016_scenarios.py)",
+        params: &[],
+        build: include_str!("../../scenarios/glider-4.toml"),
+    },
+    Entry {
+        id: "glider-ocean",
+        description: "2-D: a wave glider crossing 155 km of open Pacific off Nihoa (Hawaii) on a wave and current forecast read from NetCDF: the quickest route bends into the swell and the eddy",
+        citation: "tidepath (synthetic forecast: scripts/make_acopf2016_scenarios.py)",
+        params: &[],
+        build: include_str!("../../scenarios/glider-ocean.toml"),
+    },
 ];
 
 pub fn registry() -> Registry<&'static str> {

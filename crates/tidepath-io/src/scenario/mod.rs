@@ -6,12 +6,14 @@
 
 mod build;
 mod builtin;
+mod cell_endpoints;
 mod cells;
 mod changes_build;
 mod changes_spec;
 #[cfg(test)]
 mod changes_tests;
 mod fleet_spec;
+mod forecast;
 mod geo_cover;
 pub mod geographic;
 mod jet;
@@ -19,6 +21,8 @@ mod plan;
 mod resample;
 mod route_frame;
 pub mod spec;
+mod waves_build;
+mod waves_spec;
 mod world_build;
 
 pub use build::Scenario;

@@ -7,6 +7,7 @@
 //! every planner the same way: it checks start and goal first, runs the planner, smooths,
 //! evaluates each path with the shared path evaluation and sets the [`Status`].
 
+pub mod aco;
 pub mod capabilities;
 mod fleet_judge;
 pub mod fleet_sequential;

@@ -94,6 +94,18 @@ const SAMPLING: Capabilities = Capabilities {
     graph: true,
 };
 
+/// The ant colonies' capabilities: 2-D rasters, counted in iterations (their ant steps are
+/// reported as expansions), pheromone seeded by a warm start, randomised, never exact.
+const ANTS: Capabilities = Capabilities {
+    dimensions: Dimensions::TwoOnly,
+    fleets: Fleets::OneAfterAnother,
+    warm_start: true,
+    counts: &[Unit::Iterations],
+    optimal: None,
+    randomised: true,
+    graph: false,
+};
+
 pub const PLANNERS: &[Entry<BuildPlanner>] = &[
     Entry {
         id: "pso",
@@ -230,6 +242,24 @@ pub const PLANNERS: &[Entry<BuildPlanner>] = &[
         params: GridParams::SPECS,
         build: BuildPlanner::direct(Capabilities { optimal: None, ..GRID }, |s| {
             Ok(Box::new(GridSearch::new("theta-star", GridParams::from_table(&s.params, &s.prefix)?, true)))
+        }),
+    },
+    Entry {
+        id: "aco",
+        description: "basic ant colony on the world's raster (8-connected 2-D): roulette on pheromone and 1/distance to the goal, every ant that reaches the goal deposits Q/L; moves priced by the scenario's cost",
+        citation: "Dorigo 1991; grid form as acopf2016 eqs. 4-6",
+        params: super::aco::AcoParams::SPECS,
+        build: BuildPlanner::direct(ANTS, |s| {
+            Ok(Box::new(super::aco::AntColony::aco(super::aco::AcoParams::from_table(&s.params, &s.prefix)?)))
+        }),
+    },
+    Entry {
+        id: "acopf",
+        description: "improved ant colony with a potential field: heuristic of attraction to the goal, repulsion from obstacles, waves and current; best tour rewarded, worst punished",
+        citation: "Gao et al. 2016 (acopf2016)",
+        params: super::aco::AcopfParams::SPECS,
+        build: BuildPlanner::direct(ANTS, |s| {
+            Ok(Box::new(super::aco::AntColony::acopf(super::aco::AcopfParams::from_table(&s.params, &s.prefix)?)))
         }),
     },
     Entry {
