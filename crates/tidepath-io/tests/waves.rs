@@ -225,7 +225,7 @@ fn bad_wave_values_and_glider_settings_are_named() {
         (uniform.replace("kind = \"wave-glider\"", "kind = \"wave-glider\"\nspeed_max = 2.0"), "vehicle.speed_max: = 2: a wave glider's speed"),
         (uniform.replace("kind = \"wave-glider\"", "kind = \"wave-glider\"\nwave_gain = 11.0"), "vehicle.wave_gain: must be in [0, 10], got 11"),
         (uniform.replace("kind = \"wave-glider\"", "kind = \"wave-glider\"\ncurrent_gain = -0.1"), "vehicle.current_gain"),
-        (uniform.replace("kind = \"wave-glider\"", "kind = \"wave-glider\"\nmin_speed = 0.0"), "vehicle.min_speed: must be in (0, 5] m/s, got 0"),
+        (uniform.replace("kind = \"wave-glider\"", "kind = \"wave-glider\"\nmin_speed = 0.0"), "vehicle.min_speed: must be in (0, 5], got 0"),
         (uniform.replace("kind = \"wave-glider\"", "kind = \"glider\""), "vehicle.kind"),
     ];
     for (text, want) in cases {

@@ -73,11 +73,6 @@ fn check_layers(field: &str, g: &WaveGrid) -> Result<()> {
     Ok(())
 }
 
-/// The largest gain of the glider's regression accepted (m/s per metre or per m/s): acopf2016's
-/// are 0.1623 and 0.2660; ten is already a vehicle faster than the waves themselves.
-pub const MAX_GLIDER_GAIN: f64 = 10.0;
-/// The largest speed floor accepted (m/s): no wave glider keeps 5 m/s in calm water.
-pub const MAX_GLIDER_MIN_SPEED: f64 = 5.0;
 
 /// What drives a `[vehicle]` (named `at`): thrusters, or the waves through acopf2016's
 /// regression (eqs. 1-2) with the spec's coefficients over the defaults. The glider's fields
@@ -102,15 +97,11 @@ pub(super) fn propulsion(s: &VehicleSpec, at: &str) -> Result<Propulsion> {
         }
     }
     let mut g = GliderSpeed::default();
-    for (name, v) in fields {
+    // The ranges are the ones `tidepath vehicles` lists: declared once, with the model.
+    for ((name, v), spec) in fields.into_iter().zip(GliderSpeed::PARAMS) {
         let Some(v) = v else { continue };
-        let (ok, range) = match name {
-            "min_speed" => (v > 0.0 && v <= MAX_GLIDER_MIN_SPEED, format!("(0, {MAX_GLIDER_MIN_SPEED}] m/s")),
-            _ => ((0.0..=MAX_GLIDER_GAIN).contains(&v), format!("[0, {MAX_GLIDER_GAIN}]")),
-        };
-        if !(ok && v.is_finite()) {
-            return Err(Error::input(format!("{at}.{name}"), format!("must be in {range}, got {v}")));
-        }
+        debug_assert_eq!(name, spec.name);
+        spec.range.check_number(v).map_err(|e| Error::input(format!("{at}.{name}"), e))?;
         match name {
             "wave_gain" => g.wave_gain = v,
             "current_gain" => g.current_gain = v,
