@@ -184,3 +184,37 @@ fn the_flown_rechecker_finds_what_it_is_shown() {
         .unwrap_err()
         .contains("halfway"));
 }
+
+/// A wave glider's plans, re-checked on the re-checker's own glider clock: every planner on
+/// `glider-4` (waves rising to the north-west, an eddy), a few short runs each. The clock is the
+/// regression's, so a plan called feasible must agree with it in time and clearance.
+#[test]
+fn every_planner_agrees_with_the_glider_clock() {
+    use rayon::prelude::*;
+    let s = tidepath_io::scenario::load("glider-4").unwrap();
+    let feasible: usize = PLANNERS
+        .par_iter()
+        .map(|entry| {
+            let mut feasible = 0;
+            for seed in 0..3 {
+                let req = PlanRequest {
+                    planner: Some(entry.id.into()),
+                    seed,
+                    iterations: entry.build.caps.counts_unit(tidepath::planner::Unit::Iterations).then_some(10),
+                    evaluations: entry.build.is_optimizer().then_some(500),
+                    samples: entry.build.caps.counts_unit(tidepath::planner::Unit::Samples).then_some(500),
+                    ..PlanRequest::default()
+                };
+                let Ok(r) = s.plan(&req, &mut |_| {}) else { break };
+                if r.status.is_success() {
+                    feasible += 1;
+                    if let Err(e) = common::recheck_plan(&s, &r) {
+                        panic!("{}: re-check disagrees with a feasible verdict on glider-4: {e}", entry.id);
+                    }
+                }
+            }
+            feasible
+        })
+        .sum();
+    assert!(feasible >= 20, "only {feasible} feasible glider plans re-checked");
+}
