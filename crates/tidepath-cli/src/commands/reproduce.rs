@@ -10,7 +10,8 @@ use crate::Outcome;
 
 #[derive(Args)]
 pub struct ReproduceArgs {
-    /// Which paper's experiments to run (`wpa2017`, `lfhh2019`, `amfa2015`; `list` shows all).
+    /// Which paper's experiments to run (`wpa2017`, `lfhh2019`, `amfa2015`, `ijs2023`, `acopf2016`;
+    /// `list` shows all).
     pub paper: String,
     /// Runs per planner and problem.
     #[arg(long, default_value_t = 30)]
@@ -37,7 +38,8 @@ pub struct ReproduceArgs {
     #[arg(long)]
     pub quick: bool,
     /// Run only these parts of the paper, comma-separated (lfhh2019: table2, table3, ablation,
-    /// sweeps, its full run takes hours; amfa2015: tables, paths); default: all.
+    /// sweeps, its full run takes hours; amfa2015: tables, paths; ijs2023: tables, fleet;
+    /// acopf2016: figures, tables, ocean); default: all.
     #[arg(long, value_delimiter = ',')]
     pub only: Vec<String>,
 }

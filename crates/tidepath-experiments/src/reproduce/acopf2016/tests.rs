@@ -57,7 +57,7 @@ fn a_quick_run_writes_the_report_the_results_and_the_figures() {
     let p = paper("acopf2016").unwrap();
     let outcomes = reproduce(&p, &opts(2, 2), &mut out, dir.path(), &|_, _| {}, &Sketch).unwrap();
     out.commit().unwrap();
-    assert_eq!(outcomes.len(), ENVIRONMENTS.len() + 1);
+    assert_eq!(outcomes.len(), ENVIRONMENTS.len() + 2);
     let md = std::fs::read_to_string(dir.path().join("REPORT.md")).unwrap();
     for needle in [
         "## Fig. 3: environment 1, fixed wave height, no current (`glider-1`)",
@@ -72,6 +72,10 @@ fn a_quick_run_writes_the_report_the_results_and_the_figures() {
         "- ACOPF's paths use the current",
         "### Travel time when the ants reward it",
         "![best path of each planner](fig4-glider-2/paths.svg)",
+        "### Gap to the optimum on a forecast",
+        "| acopf | length | 2 of 2 |",
+        "| aco | cost |",
+        "A*'s quickest path on the same cells:",
     ] {
         assert!(md.contains(needle), "{needle} missing from\n{md}");
     }
@@ -85,7 +89,8 @@ fn a_quick_run_writes_the_report_the_results_and_the_figures() {
     assert!(!dir.path().join("objective-cost/paths.svg").exists());
     // Three claims in every environment, one more in environments 2 and 3.
     let claims: Vec<usize> = outcomes.iter().map(|o| o.claims.len()).collect();
-    assert_eq!(claims, [3, 4, 4, 3, 0]);
+    assert_eq!(claims, [3, 4, 4, 3, 0, 0]);
+    assert!(dir.path().join("ocean-glider-ocean/results.json").exists());
     assert!(check_only("acopf2016", &["maps".to_string()]).is_err());
 }
 
