@@ -84,10 +84,12 @@ pub fn group_runs(records: &[RunRecord]) -> Vec<ProblemRuns<'_>> {
     out
 }
 
-/// Whether a run searched before it iterated (expansions and iterations both counted): the
-/// history then starts from the search's result, not from a random population.
+/// Whether a run searched before it iterated (expansions and iterations both counted, and a
+/// history entry before the first iteration): the history then starts from the search's
+/// result, not from a random population. The ant colonies count their steps as expansions but
+/// record one entry per iteration only: no search before them.
 pub fn seeded_by_search(r: &RunRecord) -> bool {
-    r.expansions > 0 && r.iterations > 0 && !r.history.is_empty()
+    r.expansions > 0 && r.iterations > 0 && r.history.len() as u64 > r.iterations
 }
 
 /// Label of a planner's best path in the paths figure, so the legend reads the same in every

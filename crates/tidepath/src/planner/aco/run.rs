@@ -160,6 +160,12 @@ pub fn mission(
     let mut walker = Walker::new(g.len(), s.lookahead);
     let mut tours = Tours::default();
     let mut best = (f64::INFINITY, Vec::new());
+    // The history is in the scenario's cost, as every planner's is (figures draw it against
+    // other planners and the reference): with the ants on length or time, the best tour's path
+    // is priced by the cost model each time it changes.
+    let model = problem.path_model(i);
+    let mut scratch = crate::scratch::Scratch::default();
+    let (mut shown, mut shown_for) = (f64::INFINITY, f64::INFINITY);
     let (mut stopped_by, mut done) = (None, 0u64);
     while done < budget.iterations {
         if let Some(r) = term.interrupted() {
@@ -188,7 +194,17 @@ pub fn mission(
         pheromone::update(&mut tau, &tours, s.rho, s.q, colony.improved());
         done += 1;
         out.stats.iterations += 1;
-        out.stats.history.push(earlier + best.0);
+        if best.0 != shown_for {
+            shown_for = best.0;
+            shown = match s.objective {
+                Objective::Cost => best.0,
+                _ => {
+                    let points = simplify(best.1.iter().map(|&c| g.point(c)).collect());
+                    problem.cost.cost(&model, &points, &mut scratch)
+                }
+            };
+        }
+        out.stats.history.push(earlier + shown);
         report(out, best.0);
     }
     out.stats.expansions += steps;

@@ -319,6 +319,24 @@ fn colonies_go_around_a_wall() {
     }
 }
 
+/// With the ants on length (the paper's Q/L) the history is still in the scenario's cost, as
+/// every planner's is, so figures can set it beside other planners and a reference: its last
+/// entry is the plan's cost, not the path's length.
+#[test]
+fn the_history_is_in_the_scenarios_cost_whatever_the_ants_reward() {
+    let mut w = world_2d(2000.0, 1000.0);
+    wall(&mut w, (950.0, 0.0), (1050.0, 750.0));
+    let m = Mission::new("m", vehicle(PI), Vec3::new(150.0, 150.0, 0.0), Vec3::new(1850.0, 150.0, 0.0), 0.0);
+    for id in ["aco", "acopf"] {
+        let plan = run(&mut colony(id, "cells = 40\nobjective = \"length\""), &w, &m, Termination::iterations(20), 3);
+        assert_eq!(plan.status, Status::Feasible, "{id}: {}", plan.reason);
+        let last = *plan.stats.history.last().unwrap();
+        assert!((last - plan.cost).abs() <= 1e-9 * plan.cost, "{id}: history ends at {last}, cost {}", plan.cost);
+        let length = plan.missions[0].metrics.as_ref().unwrap().length_m;
+        assert!((last - length).abs() > 1.0, "{id}: the history is not the length {length}");
+    }
+}
+
 /// The same seed gives the same path bit for bit; the run's iteration limit replaces T.
 #[test]
 fn runs_are_deterministic() {
