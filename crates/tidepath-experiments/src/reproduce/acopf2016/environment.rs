@@ -130,11 +130,10 @@ pub fn experiment(
         }
     }
     notes.push(
-        "The convergence figure plots each run's progress history as the planners report it: the best tour's \
-         length in metres after each iteration (the ants' objective here, objective = length), not the scenario's \
-         cost; its dashed reference line and the gaps at the lines' ends are in the cost's units and do not apply \
-         to these curves, and iteration 0 on its axis is the first iteration. The iterations-to-converge column is \
-         read from the same histories."
+        "The convergence figure plots each run's history: the scenario's cost (the glider's travel time, as \
+         every planner reports it) of the ants' best tour after each iteration, the tour being the shortest \
+         found (the ants reward length here). The iterations-to-converge column is the iteration at which \
+         that tour was first found."
             .to_string(),
     );
     let tables = vec![

@@ -72,12 +72,17 @@ pub fn experiment(opts: &ReproduceOptions, progress: &(dyn Fn(usize) + Sync)) ->
              the optima. Time per run is wall time on this machine, runs side by side with --jobs.",
             opts.runs
         ),
-        comparison: merged(paper, cost),
+        comparison: {
+            // A*'s quickest path is the gap column's reference and the plan view's dashed line.
+            let mut c = merged(paper, cost);
+            super::environment::set_reference(&mut c, &s, time.as_ref(), opts)?;
+            c
+        },
         paper: PaperTable { source: "none (tidepath's experiment)".into(), runs: None, cells: Vec::new() },
         claims: Vec::new(),
         notes,
         tables: vec![(format!("Gap to the optimum on a forecast\n\n{LEGEND}"), table)],
-        scenario: None,
+        scenario: Some(s),
     })
 }
 
