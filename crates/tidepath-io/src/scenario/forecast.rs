@@ -50,7 +50,8 @@ fn open_forecast(path: &str, field: &str, kind: Kind, source: &str, warnings: &m
 /// times become seconds after `epoch` (the file's first time when the scenario gives none),
 /// `convert` turns a node's values (at its (lon, lat) and (x, y)) into the frame, and water
 /// nodes where any value is missing at any step (land or fill in the forecast) become gaps,
-/// counted in a warning naming the first; their values are 0.
+/// counted in a warning naming the first; their values are 0. Land nodes without data are NaN
+/// for the caller to fill ([`fill_land`]).
 #[allow(clippy::too_many_arguments)]
 fn resample_steps<const N: usize>(
     field: &str,
@@ -97,11 +98,12 @@ fn resample_steps<const N: usize>(
             let xy = m.xy(k);
             let node = if values.iter().all(|v| v.is_finite()) {
                 convert(lonlat, xy, values)
-            } else {
-                if water(xy.0, xy.1) {
-                    gaps.push(k);
-                }
+            } else if water(xy.0, xy.1) {
+                gaps.push(k);
                 [0.0; N]
+            } else {
+                // Land: the caller decides what stands in (`fill_land`).
+                [f64::NAN; N]
             };
             for (layer, v) in out.iter_mut().zip(node) {
                 layer.push(v);
@@ -167,7 +169,16 @@ pub(super) fn forecast_grid(
             [u, v]
         },
     )?;
-    let (u, v) = r.layers.into_iter().map(|[u, v]| (u, v)).unzip();
+    // No current runs into land: 0 at land nodes.
+    let (u, v) = r
+        .layers
+        .into_iter()
+        .map(|[mut u, mut v]| {
+            fill_land(&mut u, r.shape, false);
+            fill_land(&mut v, r.shape, false);
+            (u, v)
+        })
+        .unzip();
     let grid = CurrentSpec::Grid {
         origin: r.origin,
         spacing: r.spacing,
@@ -202,7 +213,16 @@ pub(super) fn load_waves(
     let steps: Vec<[GeoGrid; 1]> = series.height.into_iter().map(|h| [h]).collect();
     let (r, epoch) =
         resample_steps(F, kind, &series.times, &steps, resolution, (frame, &spec.world), epoch, warnings, |_, _, h| h)?;
-    let height = r.layers.into_iter().map(|[h]| h).collect();
+    // Near the coast the sea state is the nearest sea node's, not a calm invented by the land
+    // mask (which would slow a glider in the last cells before land).
+    let height = r
+        .layers
+        .into_iter()
+        .map(|[mut h]| {
+            fill_land(&mut h, r.shape, true);
+            h
+        })
+        .collect();
     spec.world.waves = Some(WavesSpec::Grid {
         origin: r.origin,
         spacing: r.spacing,
@@ -217,4 +237,58 @@ pub(super) fn load_waves(
 /// The longitude/latitude box holding `world`'s metric domain.
 fn domain_cover(frame: &GeoFrame, world: &WorldSpec) -> Result<GeoBox> {
     cover(frame, [world.bounds.min[0], world.bounds.min[1]], [world.bounds.max[0], world.bounds.max[1]])
+}
+
+/// Replaces the NaN (land) nodes of a row-major `[nx, ny]` layer: with 0, or with the value of
+/// the nearest node that has one (breadth-first over the 4-neighbours, so ties go to the node
+/// reached first in a fixed order: deterministic). A layer with no value at all becomes 0.
+fn fill_land(layer: &mut [f64], [nx, ny]: [usize; 2], nearest: bool) {
+    if !nearest {
+        for v in layer.iter_mut().filter(|v| v.is_nan()) {
+            *v = 0.0;
+        }
+        return;
+    }
+    let mut queue: std::collections::VecDeque<usize> = (0..layer.len()).filter(|&k| !layer[k].is_nan()).collect();
+    while let Some(k) = queue.pop_front() {
+        let (i, j) = (k % nx, k / nx);
+        let around = [
+            (i > 0).then(|| k - 1),
+            (i + 1 < nx).then(|| k + 1),
+            (j > 0).then(|| k - nx),
+            (j + 1 < ny).then(|| k + nx),
+        ];
+        for n in around.into_iter().flatten() {
+            if layer[n].is_nan() {
+                layer[n] = layer[k];
+                queue.push_back(n);
+            }
+        }
+    }
+    for v in layer.iter_mut().filter(|v| v.is_nan()) {
+        *v = 0.0;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fill_land;
+
+    #[test]
+    fn land_takes_zero_or_the_nearest_sea_value() {
+        let nan = f64::NAN;
+        // 4 x 2 nodes: sea at the west and east ends, land between.
+        let mut layer = [1.0, nan, nan, 3.0, 1.5, nan, nan, nan];
+        let mut zero = layer;
+        fill_land(&mut zero, [4, 2], false);
+        assert_eq!(zero, [1.0, 0.0, 0.0, 3.0, 1.5, 0.0, 0.0, 0.0]);
+        fill_land(&mut layer, [4, 2], true);
+        // Node 1 is next to 1.0, node 2 and node 7 next to 3.0, node 5 next to 1.5; node 6 is
+        // two steps from 3.0 (via 2 or 7) and from 1.5 (via 5): the queue, in node order,
+        // reaches it first from node 2.
+        assert_eq!(layer, [1.0, 1.0, 3.0, 3.0, 1.5, 1.5, 3.0, 3.0]);
+        let mut empty = [nan; 3];
+        fill_land(&mut empty, [3, 1], true);
+        assert_eq!(empty, [0.0; 3]);
+    }
 }
