@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Builds the `tidepath` Python wheel (crates/tidepath-py) with maturin, installs it into a
+# virtual environment and runs its pytest suite (issue #36). Exits non-zero on any failure.
+#
+#   bash scripts/test_python.sh            # venv in target/py-venv, reused between runs
+#
+# Environment: TIDEPATH_PY_VENV (venv folder), TIDEPATH_PY_PROFILE (cargo profile of the
+# wheel, default `py`: the test profile's settings, see Cargo.toml), TIDEPATH_PY_EXTRAS=0 to
+# skip the optional packages (pandas, dask[distributed]; their tests then skip, saying why).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+target=${CARGO_TARGET_DIR:-$root/target}
+venv=${TIDEPATH_PY_VENV:-$target/py-venv}
+profile=${TIDEPATH_PY_PROFILE:-py}
+
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv"
+fi
+py="$venv/bin/python"
+"$py" -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy pytest
+if [ "${TIDEPATH_PY_EXTRAS:-1}" != 0 ]; then
+  "$py" -m pip install -q --disable-pip-version-check pandas "dask[distributed]" \
+    || echo "warning: pandas / dask[distributed] not installed: their tests skip" >&2
+fi
+
+# The CLI the tests compare against, from the same tree (a no-op after `cargo test`, which
+# builds it in the test profile).
+cargo build -q --locked --profile test -p tidepath-cli --bin tidepath
+export TIDEPATH_CLI="$target/debug/tidepath"
+
+wheels=$(mktemp -d)
+trap 'rm -rf "$wheels"' EXIT
+(cd crates/tidepath-py && "$venv/bin/maturin" build --locked --profile "$profile" --out "$wheels" --interpreter "$py" -q)
+"$py" -m pip install -q --disable-pip-version-check --force-reinstall --no-deps "$wheels"/tidepath-*.whl
+
+# From outside the source tree, so the installed wheel is what is imported.
+cd "$wheels"
+"$py" -m pytest -q -p no:cacheprovider "$root/crates/tidepath-py/tests"
