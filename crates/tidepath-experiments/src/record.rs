@@ -16,6 +16,7 @@ pub struct RunRecord {
     /// `tidepath plan PROBLEM --planner PLANNER --seed SEED` repeats it.
     pub seed: u64,
     /// Best cost found (for function benchmarks, the function value).
+    #[serde(deserialize_with = "null_as_nan")]
     pub cost: f64,
     /// The path is feasible (always true for function benchmarks).
     pub feasible: bool,
@@ -94,4 +95,12 @@ impl Default for RunRecord {
             missions: Vec::new(),
         }
     }
+}
+
+/// Reads a number JSON wrote as `null`: serde_json writes NaN and the infinities as `null`
+/// (a planner row with no run, a run without a finite cost), and a results.json read back
+/// (`merge`) must take what it wrote. `null` becomes NaN.
+pub(crate) fn null_as_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    use serde::Deserialize;
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
 }

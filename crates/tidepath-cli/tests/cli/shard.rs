@@ -160,3 +160,28 @@ fn bad_shards_are_refused_naming_the_flag_and_value() {
         assert!(!out.exists());
     }
 }
+
+/// More shares than runs of a planner: a share holding no run of one planner writes that row's
+/// statistics as `null` (NaN in JSON), and merge reads them back: six shares of the six runs
+/// join into the unsharded comparison.
+#[test]
+fn shares_without_a_run_of_some_planner_still_merge() {
+    let dir = tempfile::tempdir().unwrap();
+    let whole = dir.path().join("whole");
+    let o = run(&["--out", whole.to_str().unwrap(), "--jobs", "1"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let parts: Vec<PathBuf> = (1..=6)
+        .map(|k| {
+            let part = dir.path().join(format!("six-{k}"));
+            let share = format!("{k}/6");
+            let o = run(&["--shard", share.as_str(), "--out", part.to_str().unwrap(), "--jobs", "1"]);
+            assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+            part
+        })
+        .collect();
+    let out = dir.path().join("merged");
+    let refs: Vec<&Path> = parts.iter().map(|p| p.as_path()).collect();
+    let o = merge(&refs, &out);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(untimed(&out.join("results.json")), untimed(&whole.join("results.json")));
+}

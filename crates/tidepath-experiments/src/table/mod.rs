@@ -63,12 +63,18 @@ pub struct PlannerRow {
     pub feasible_runs: usize,
     /// Cost over all runs, penalties for violations included (an infeasible run's cost carries
     /// them): the papers' columns and what the rank-sum test compares.
+    #[serde(deserialize_with = "crate::record::null_as_nan")]
     pub best: f64,
+    #[serde(deserialize_with = "crate::record::null_as_nan")]
     pub mean: f64,
+    #[serde(deserialize_with = "crate::record::null_as_nan")]
     pub std: f64,
+    #[serde(deserialize_with = "crate::record::null_as_nan")]
     pub worst: f64,
+    #[serde(deserialize_with = "crate::record::null_as_nan")]
     pub median: f64,
     /// Share of runs whose path is feasible: `feasible_runs / runs`.
+    #[serde(deserialize_with = "crate::record::null_as_nan")]
     pub success_rate: f64,
     /// Best and mean cost over the feasible runs only; `None` without a feasible run.
     #[serde(default)]
@@ -81,8 +87,10 @@ pub struct PlannerRow {
     pub mean_length_m: Option<f64>,
     pub mean_travel_time_s: Option<f64>,
     /// Over all runs.
+    #[serde(deserialize_with = "crate::record::null_as_nan")]
     pub mean_evaluations: f64,
     /// Timing field: mean wall time per run (s), over all runs.
+    #[serde(deserialize_with = "crate::record::null_as_nan")]
     pub mean_wall_s: f64,
     /// Runs whose cost is exactly 0, and below 1e-300 (amfa2015's "0 times" columns), of `runs`.
     pub zeros_exact: usize,
