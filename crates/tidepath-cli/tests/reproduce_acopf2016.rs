@@ -26,7 +26,7 @@ fn reproduce_acopf2016_refuses_an_unknown_part() {
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
-        err.starts_with("error: --only: `maps` is not a part of acopf2016 (known: figures, tables)")
+        err.starts_with("error: --only: `maps` is not a part of acopf2016 (known: figures, tables, ocean)")
             && err.lines().count() == 1,
         "{err}"
     );

@@ -50,8 +50,15 @@ const ORDER: &[&str] = &[
 ];
 
 /// The workspace's crates, lowest first: each may depend only on the ones before it.
-const CRATES: &[&str] =
-    &["tidepath-search", "tidepath", "tidepath-io", "tidepath-experiments", "tidepath-plot", "tidepath-cli"];
+const CRATES: &[&str] = &[
+    "tidepath-search",
+    "tidepath",
+    "tidepath-io",
+    "tidepath-experiments",
+    "tidepath-plot",
+    "tidepath-cli",
+    "tidepath-py",
+];
 
 #[test]
 fn no_module_uses_a_layer_above_it() {

@@ -16,9 +16,9 @@ fn vehicles_lists_the_glider_regression_with_its_keys() {
     assert!(out.contains("speed over ground = max(0.05, 0.1623 H + 0.266 c_along) m/s"), "{out}");
     // Each key with its range and default on the line after its help.
     for (key, range, default) in [
-        ("wave_gain", "in (0, inf)", "0.1623"),
-        ("current_gain", "in [0, inf)", "0.266"),
-        ("min_speed", "in (0, inf)", "0.05"),
+        ("wave_gain", "in [0, 10]", "0.1623"),
+        ("current_gain", "in [0, 10]", "0.266"),
+        ("min_speed", "in (0, 5]", "0.05"),
     ] {
         let mut lines = out.lines().skip_while(|l| l.split_whitespace().next() != Some(key));
         assert!(lines.next().is_some(), "{key} missing: {out}");
