@@ -73,7 +73,6 @@ fn check_layers(field: &str, g: &WaveGrid) -> Result<()> {
     Ok(())
 }
 
-
 /// What drives a `[vehicle]` (named `at`): thrusters, or the waves through acopf2016's
 /// regression (eqs. 1-2) with the spec's coefficients over the defaults. The glider's fields
 /// are refused for an AUV, and a speed range for a glider (its speed is not a decision).
