@@ -282,7 +282,9 @@ fn figure(scenario: &Scenario, report: &PlanReport, reference: Option<&PlanRepor
     fig.history_per_sample = report.samples > 0 && report.iterations == 0;
     fig.history_start = if fig.history_per_sample {
         None
-    } else if report.expansions > 0 && !history.is_empty() {
+    } else if report.expansions > 0 && history.len() as u64 > report.iterations {
+        // An entry before the first iteration: the search's result. (The ant colonies count
+        // their steps as expansions but record one entry per iteration.)
         Some(format!("after a reference search ({} expansions)", report.expansions))
     } else if report.warm_start && !history.is_empty() {
         Some("includes the warm start (--init)".to_string())
