@@ -97,6 +97,37 @@ impl PyScenario {
         Self::of(Scenario::from_toml(text, source))
     }
 
+    /// A scenario from a dict shaped like its TOML file (`to_dict()` gives one); `source`
+    /// names it in messages. Errors name the field as for a file.
+    #[staticmethod]
+    #[pyo3(signature = (d, source = "<dict>"))]
+    fn from_dict(py: Python<'_>, d: &Bound<'_, PyAny>, source: &str) -> PyResult<Self> {
+        let text: String = py
+            .import("json")?
+            .call_method1("dumps", (d,))
+            .map_err(|e| err(Error::input("scenario", format!("not JSON-like ({e})"))))?
+            .extract()?;
+        let mut value: Value = serde_json::from_str(&text).map_err(|e| err(Error::input("scenario", e.to_string())))?;
+        if !value.is_object() {
+            return Err(err(Error::input("scenario", "must be a dict shaped like a scenario file")));
+        }
+        // TOML has no null: an absent key is what `None` means.
+        without_nulls(&mut value);
+        let table: toml::Value =
+            serde_json::from_value(value).map_err(|e| err(Error::input("scenario", e.to_string())))?;
+        let text = toml::to_string(&table).map_err(|e| err(Error::input("scenario", e.to_string())))?;
+        Self::of(Scenario::from_toml(&text, source))
+    }
+
+    /// The scenario's spec as a dict shaped like its TOML file (absent keys left out):
+    /// `Scenario.from_dict(s.to_dict())` is the same scenario.
+    fn to_dict(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let mut value =
+            serde_json::to_value(&self.inner.spec).map_err(|e| err(Error::input("scenario", e.to_string())))?;
+        without_nulls(&mut value);
+        json_to_py(py, &value)
+    }
+
     /// The scenario as TOML (its spec as loaded: `Scenario.from_toml(s.to_toml())` is the
     /// same scenario).
     fn to_toml(&self) -> PyResult<String> {
@@ -378,5 +409,17 @@ impl PyScenario {
         let text = me.to_toml()?;
         let ctor = py.get_type::<PyScenario>().getattr("from_toml")?;
         Ok((ctor, PyTuple::new(py, [text, me.inner.source.clone()])?))
+    }
+}
+
+/// `value` with every null member of its objects removed, at any depth.
+fn without_nulls(value: &mut Value) {
+    match value {
+        Value::Object(m) => {
+            m.retain(|_, v| !v.is_null());
+            m.values_mut().for_each(without_nulls);
+        }
+        Value::Array(a) => a.iter_mut().for_each(without_nulls),
+        _ => {}
     }
 }

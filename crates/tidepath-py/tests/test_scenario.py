@@ -48,6 +48,21 @@ def test_to_toml_round_trips():
     assert again.start == s.start and again.goal == s.goal
 
 
+def test_from_dict_round_trips_and_names_bad_fields():
+    s = Scenario.builtin("glider-3")
+    d = s.to_dict()
+    assert d["vehicle"]["kind"] == "wave-glider" and d["world"]["waves"]["kind"] == "cells"
+    again = Scenario.from_dict(d, source="mine")
+    assert again.to_toml() == s.to_toml() and again.start == s.start
+    d["vehicle"]["speed"] = -1.0
+    d["vehicle"].pop("kind")
+    with pytest.raises(ValueError, match=r"vehicle\.speed") as e:
+        Scenario.from_dict(d)
+    assert "\n" not in str(e.value)
+    with pytest.raises(ValueError, match=r"^scenario: "):
+        Scenario.from_dict([1, 2])
+
+
 def test_load_reads_a_file(tmp_path: pathlib.Path):
     path = tmp_path / "mine.toml"
     path.write_text(Scenario.builtin("demo").to_toml())
