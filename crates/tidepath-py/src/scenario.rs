@@ -227,9 +227,10 @@ impl PyScenario {
     /// The GIL is released while planning; Ctrl-C stops the run and raises
     /// KeyboardInterrupt. `params` updates `[planner.params.ID]` of the planner that runs;
     /// `smoother` is a smoother id (or "none") with `smoother_params`; `init` a warm start,
-    /// one `(n, 3)` path per mission.
+    /// one `(n, 3)` path per mission. With `progress`, a line on `sys.stderr` at most twice a
+    /// second: iteration, evaluations, best cost and the share of the budget used.
     #[pyo3(signature = (planner = None, seed = 0, iterations = None, evaluations = None, time_limit = None,
-        params = None, smoother = None, smoother_params = None, init = None, population = None))]
+        params = None, smoother = None, smoother_params = None, init = None, population = None, progress = false))]
     #[allow(clippy::too_many_arguments)]
     fn plan(
         &self,
@@ -244,6 +245,7 @@ impl PyScenario {
         smoother_params: Option<&Bound<'_, PyAny>>,
         init: Option<&Bound<'_, PyAny>>,
         population: Option<usize>,
+        progress: bool,
     ) -> PyResult<PyPlan> {
         let mut scenario = Cow::Borrowed(&self.inner);
         if let Some(p) = params {
@@ -272,7 +274,30 @@ impl PyScenario {
         };
         scenario.check_request(&req).map_err(err)?;
         let sc: &Scenario = &scenario;
-        let report = interruptible(py, &stop, || sc.plan(&req, &mut |_| {}))?.map_err(err)?;
+        let mut last: Option<std::time::Instant> = None;
+        let mut observer = |p: &tidepath::optim::Progress| {
+            if !progress || last.is_some_and(|t| t.elapsed() < std::time::Duration::from_millis(500)) {
+                return;
+            }
+            last = Some(std::time::Instant::now());
+            let line = format!(
+                "tidepath: iteration {}, {} evaluations, best cost {:.6} ({:.0} % of the budget, {:.1} s)\n",
+                p.iteration,
+                p.evaluations,
+                p.best_cost,
+                100.0 * p.fraction,
+                p.elapsed.as_secs_f64()
+            );
+            // Python's stderr (a notebook shows it), written with the GIL the waiting thread
+            // has released.
+            Python::attach(|py| {
+                if let Ok(e) = py.import("sys").and_then(|sys| sys.getattr("stderr")) {
+                    let _ = e.call_method1("write", (line,));
+                    let _ = e.call_method0("flush");
+                }
+            });
+        };
+        let report = interruptible(py, &stop, || sc.plan(&req, &mut observer))?.map_err(err)?;
         Ok(PyPlan::new(report, sc))
     }
 

@@ -124,3 +124,14 @@ def test_a_bad_budget_is_a_value_error():
         Scenario.builtin("demo").plan(planner="pso", iterations=0)
     with pytest.raises(ValueError, match=r"time"):
         Scenario.builtin("demo").plan(planner="pso", time_limit=-1.0)
+
+
+def test_progress_lines_go_to_python_stderr(capsys):
+    s = Scenario.builtin("demo")
+    quiet = s.plan(planner="pso", seed=3, iterations=30)
+    assert capsys.readouterr().err == ""
+    loud = s.plan(planner="pso", seed=3, iterations=30, progress=True)
+    err = capsys.readouterr().err
+    assert err.startswith("tidepath: iteration ") and "best cost" in err, err
+    # Watching changes nothing.
+    assert np.array_equal(quiet.missions[0].waypoints, loud.missions[0].waypoints)
