@@ -18,7 +18,7 @@ if [ ! -x "$venv/bin/python" ]; then
   python3 -m venv "$venv"
 fi
 py="$venv/bin/python"
-"$py" -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy pytest
+"$py" -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy pytest mypy matplotlib
 if [ "${TIDEPATH_PY_EXTRAS:-1}" != 0 ]; then
   "$py" -m pip install -q --disable-pip-version-check pandas "dask[distributed]" \
     || echo "warning: pandas / dask[distributed] not installed: their tests skip" >&2
@@ -37,3 +37,9 @@ trap 'rm -rf "$wheels"' EXIT
 # From outside the source tree, so the installed wheel is what is imported.
 cd "$wheels"
 "$py" -m pytest -q -p no:cacheprovider "$root/crates/tidepath-py/tests"
+
+# The example: its types checked strictly against the shipped stubs, then run (it draws a PNG,
+# compares three planners and, with dask, repeats the sweep on a local cluster).
+"$py" -m mypy --strict --no-incremental "$root/examples/python/plan_demo.py"
+"$py" "$root/examples/python/plan_demo.py" --out "$wheels/plan_demo.png" >/dev/null
+test -s "$wheels/plan_demo.png"
