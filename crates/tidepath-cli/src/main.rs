@@ -49,6 +49,8 @@ enum Command {
     Bench(commands::bench::BenchArgs),
     /// Rerun a paper's experiments and set our numbers beside the paper's in REPORT.md.
     Reproduce(commands::reproduce::ReproduceArgs),
+    /// Write an interactive 3-D view (one offline HTML file) of a scenario and any plans.
+    View(commands::view::ViewArgs),
 }
 
 /// Most worker threads `--jobs` accepts: far more than any machine's cores, few enough that
@@ -158,6 +160,7 @@ fn main() -> ExitCode {
         Command::Merge(args) => commands::merge::run(&args),
         Command::Bench(args) => commands::bench::run(&args),
         Command::Reproduce(args) => commands::reproduce::run(&args),
+        Command::View(args) => commands::view::run(&args),
     };
     match result {
         Ok(Outcome::Success) => ExitCode::SUCCESS,

@@ -34,6 +34,8 @@ mod repair;
 mod shard;
 #[path = "cli/vehicles.rs"]
 mod vehicles;
+#[path = "cli/view.rs"]
+mod view;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

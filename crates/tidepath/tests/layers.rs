@@ -56,6 +56,7 @@ const CRATES: &[&str] = &[
     "tidepath-io",
     "tidepath-experiments",
     "tidepath-plot",
+    "tidepath-view",
     "tidepath-cli",
     "tidepath-py",
 ];

@@ -38,6 +38,10 @@ pub struct CompareArgs {
     /// Default: `visibility` where it applies, else `theta-star`.
     #[arg(long)]
     pub reference: Option<String>,
+    /// Write an interactive 3-D view here (.html, opens offline) with the best path of each
+    /// planner (lowest cost over its runs), judged again on the scenario.
+    #[arg(long, conflicts_with = "shard")]
+    pub view: Option<PathBuf>,
     /// Also write an OMPL benchmark log (load it with `ompl_benchmark_statistics`).
     #[arg(long, conflicts_with = "shard")]
     pub ompl_log: Option<PathBuf>,
@@ -90,6 +94,7 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
         }
     }
     let ompl_id = args.ompl_log.as_deref().map(|p| outputs.declare("--ompl-log", p)).transpose()?;
+    let view_id = args.view.as_deref().map(|p| super::view::declare(&mut outputs, "--view", p)).transpose()?;
 
     let all = args.planners.len() * args.runs as usize;
     let total = share.map_or(all, |s| s.size(all));
@@ -109,6 +114,16 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
     }
     if let Some(id) = ompl_id {
         outputs.fill(id, output::ompl_log_text(&c));
+    }
+    if let Some(id) = view_id {
+        let routes = super::view::comparison_routes(&scenario, &c)?;
+        let title = format!("{} — best path of each planner over {} runs, master seed {}", scenario.name, c.runs, seed);
+        let input =
+            tidepath_view::ViewInput { scenario: &scenario, title, routes, simulation: None, simulation_mission: 0 };
+        match super::view::build(&input) {
+            Some(html) => outputs.fill(id, html),
+            None => return Ok(Outcome::Interrupted),
+        }
     }
     outputs.commit()?;
     println!(

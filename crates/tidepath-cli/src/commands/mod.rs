@@ -9,3 +9,4 @@ pub mod reproduce;
 pub mod scenarios;
 pub mod simulate;
 pub mod vehicles;
+pub mod view;

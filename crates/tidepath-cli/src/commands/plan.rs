@@ -50,6 +50,10 @@ pub struct PlanArgs {
     /// Write an SVG figure here: plan view, vertical profile and convergence.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Write an interactive 3-D view here (.html, opens offline): the seabed, obstacles,
+    /// currents, the plan's paths (and the --reference's) with hover and playback.
+    #[arg(long)]
+    pub view: Option<PathBuf>,
     /// Write the planner's search graph (its tree or roadmap, one per mission) here: .graphml
     /// or .json by the extension. Only planners that build one (see `tidepath planners`).
     #[arg(long)]
@@ -99,6 +103,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     let out_id = args.out.as_deref().map(|p| outputs.declare("--out", p)).transpose()?;
     let plot_id = args.plot.as_deref().map(|p| outputs.declare("--plot", p)).transpose()?;
     let graph_id = args.graph.as_deref().map(|p| outputs.declare("--graph", p)).transpose()?;
+    let view_id = args.view.as_deref().map(|p| super::view::declare(&mut outputs, "--view", p)).transpose()?;
     let out_format = args.out.as_deref().map(|p| ExportFormat::of(p, "--out")).transpose()?;
     let graph_format = args.graph.as_deref().map(|p| GraphFormat::of(p, "--graph")).transpose()?;
     if args.plot_graph && args.plot.is_none() {
@@ -174,6 +179,24 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     }
     if let Some(id) = plot_id {
         outputs.fill(id, figure(&scenario, &report, reference.as_ref())?);
+    }
+    if let Some(id) = view_id {
+        let mut routes = super::view::report_routes(&report);
+        if let Some(r) = reference.as_ref().filter(|r| r.status.is_success()) {
+            for mut route in super::view::report_routes(r) {
+                route.label = format!("reference: {}", route.label);
+                routes.push(route);
+            }
+        }
+        let cost = report.cost.map_or("none".to_string(), |c| format!("{c:.4}"));
+        let title =
+            format!("{} — {}, seed {}: cost {cost}, {}", scenario.name, report.planner, report.seed, report.status);
+        let input =
+            tidepath_view::ViewInput { scenario: &scenario, title, routes, simulation: None, simulation_mission: 0 };
+        match super::view::build(&input) {
+            Some(html) => outputs.fill(id, html),
+            None => return Ok(Outcome::Interrupted),
+        }
     }
     outputs.commit()?;
     print_summary(&scenario, &report);

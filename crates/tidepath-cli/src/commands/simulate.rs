@@ -74,6 +74,10 @@ pub struct SimulateArgs {
     /// Write an SVG figure here: the executed track coloured by phase, and a panel per phase.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Write an interactive 3-D view here (.html, opens offline): the executed track plays
+    /// back with the obstacles and currents of each moment and each phase's route ahead.
+    #[arg(long)]
+    pub view: Option<PathBuf>,
 }
 
 fn growth(text: &str) -> Result<Growth, Error> {
@@ -100,6 +104,7 @@ pub fn run(args: &SimulateArgs) -> Result<Outcome, Error> {
     let mut outputs = Outputs::new();
     let out_id = args.out.as_deref().map(|p| outputs.declare("--out", p)).transpose()?;
     let plot_id = args.plot.as_deref().map(|p| outputs.declare("--plot", p)).transpose()?;
+    let view_id = args.view.as_deref().map(|p| super::view::declare(&mut outputs, "--view", p)).transpose()?;
     if let Some(p) = &args.out {
         if p.extension().and_then(|e| e.to_str()) != Some("json") {
             return Err(Error::input("--out", format!("`{}`: the simulation is written as .json", p.display())));
@@ -137,6 +142,12 @@ pub fn run(args: &SimulateArgs) -> Result<Outcome, Error> {
     }
     if let Some(id) = plot_id {
         outputs.fill(id, figure(&scenario, &report)?);
+    }
+    if let Some(id) = view_id {
+        match view(&scenario, &report) {
+            Some(html) => outputs.fill(id, html),
+            None => return Ok(Outcome::Interrupted),
+        }
     }
     outputs.commit()?;
     print_phases(&scenario, &report);
@@ -258,4 +269,27 @@ fn figure(scenario: &Scenario, r: &SimReport) -> Result<String, Error> {
         focus,
     };
     render_simulation_figure(&fig)
+}
+
+/// The view of a simulation: its executed track as the route that plays back.
+fn view(scenario: &Scenario, report: &tidepath_io::simulation::SimReport) -> Option<String> {
+    let sim = &report.sim;
+    let track = tidepath_view::ViewRoute {
+        label: format!("{} track", report.planner),
+        group: report.planner.clone(),
+        mission: 0,
+        points: sim.track.points.clone(),
+        times: sim.track.times.clone(),
+        speeds: None,
+        flown: None,
+        cost: None,
+        terms: Vec::new(),
+        status: if sim.reached { "reached".to_string() } else { "not reached".to_string() },
+        feasible: sim.reached && sim.track_violations.is_empty(),
+        violations: Vec::new(),
+    };
+    let title = format!("{} — simulate with {}, seed {}: {}", scenario.name, report.planner, report.seed, sim.reason);
+    let input =
+        tidepath_view::ViewInput { scenario, title, routes: vec![track], simulation: Some(sim), simulation_mission: 0 };
+    super::view::build(&input)
 }
