@@ -187,7 +187,14 @@
 
     var api = { timeRange: [t0, t1], renderMs: null, setTime: setTime };
     window.tidepathView = api;
+    // A link can open at a moment: view.html#t=3600 (seconds on the scenario's clock).
+    var start = /(?:^#|&)t=([-0-9.eE+]+)/.exec(location.hash);
     Plotly.newPlot(gd, traces, layout, config).then(function () {
+      if (start && isFinite(parseFloat(start[1]))) {
+        slider.value = String(Math.max(t0, Math.min(t1, parseFloat(start[1]))));
+        return setTime(parseFloat(slider.value));
+      }
+    }).then(function () {
       // Two frames later the WebGL canvas holds the first picture.
       requestAnimationFrame(function () {
         requestAnimationFrame(function () {

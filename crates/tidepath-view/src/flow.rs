@@ -61,7 +61,8 @@ fn cone_points(world: &World) -> Vec<Vec3> {
             };
             match world.dims {
                 tidepath::world::Dims::Two => {
-                    if matches!(world.terrain, Terrain::None) || floor < top {
+                    // A 2-D world's box is its travel plane: only land (terrain above it) is dry.
+                    if matches!(world.terrain, Terrain::None) || world.terrain.elevation(x, y) < top {
                         out.push(Vec3::new(x, y, top));
                     }
                 }
@@ -217,6 +218,24 @@ mod tests {
         assert_eq!(frames.len(), 2);
         assert_eq!(frames[1]["t"].as_f64(), Some(250.0));
         assert_eq!(frames[1]["v"][0].as_f64(), Some(1.0));
+    }
+
+    #[test]
+    fn a_2d_world_s_cones_stand_on_its_plane_but_not_on_land() {
+        use tidepath::world::terrain::{GaussianPeaks, Peak};
+        let mut w = World::open(Aabb { min: Vec3::new(0.0, 0.0, 0.0), max: Vec3::new(1000.0, 1000.0, 0.0) });
+        w.dims = tidepath::world::Dims::Two;
+        // An island in the middle of 100 m of water.
+        let island = Peak { x: 500.0, y: 500.0, height: 200.0, sigma_x: 100.0, sigma_y: 100.0 };
+        w.terrain = Terrain::Peaks(GaussianPeaks { base: -100.0, peaks: vec![island], ceiling: None });
+        let c = Current::Uniform(Vec3::new(0.3, 0.0, 0.0));
+        let j = currents_json(&w, &[(0.0, &c)], &[0.0], &never).unwrap().unwrap();
+        let (x, y) = (j["x"].as_array().unwrap(), j["y"].as_array().unwrap());
+        assert!(j["z"].as_array().unwrap().iter().all(|z| z.as_f64() == Some(0.0)));
+        assert!(x.len() > 100 && x.len() < 144, "{} cones", x.len());
+        for (a, b) in x.iter().zip(y) {
+            assert!(w.terrain.elevation(a.as_f64().unwrap(), b.as_f64().unwrap()) < 0.0);
+        }
     }
 
     #[test]

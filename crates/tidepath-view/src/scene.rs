@@ -55,6 +55,12 @@ fn z_range(input: &ViewInput<'_>, seabed: Option<&Value>) -> (f64, f64) {
         let pad = 0.03 * (b.max.x - b.min.x).max(b.max.y - b.min.y).max(1.0);
         lo -= pad;
         hi += pad;
+    } else {
+        // A flat seabed on the box's floor flickers against the floor's pane (both drawn at
+        // one depth): keep a little water under the deepest node and air over the land.
+        let pad = 0.02 * (hi - lo);
+        lo -= pad;
+        hi += pad;
     }
     (lo, hi)
 }
