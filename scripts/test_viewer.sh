@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The 3-D viewer in a real browser: writes the views of demo (a scenario, then a plan),
+# The 3-D viewer in a real browser: writes the views of a demo plan,
 # salish-strait, a fleet plan and a simulation, and opens each in headless Chromium with
 # software WebGL (scripts/view_test/check_views.mjs): it must render, raise no JavaScript
 # error, make no request, redraw when the time slider moves, and give non-blank screenshots.
@@ -10,17 +10,25 @@
 # Environment: TIDEPATH_BIN (the CLI; default: target/debug/tidepath, built in the test
 # profile), VIEW_SHOTS (screenshot folder, default target/view-test/shots), TIDEPATH_CHROMIUM
 # (browser, default /usr/bin/chromium: Debian's chromium, installed with apt-get if missing).
+#
+#   bash scripts/test_viewer.sh --install-only   # only the browser, Node and the npm packages
+#                                                # (.ci/run fetches them while cargo builds)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-if [ -n "${TIDEPATH_BIN:-}" ]; then
+install_only=false
+[ "${1:-}" = "--install-only" ] && install_only=true
+
+if $install_only; then
+  :
+elif [ -n "${TIDEPATH_BIN:-}" ]; then
   bin=$TIDEPATH_BIN
 else
   # A no-op after `cargo test`, which builds the CLI in the test profile.
   cargo build -q --locked --profile test -p tidepath-cli --bin tidepath
   bin=${CARGO_TARGET_DIR:-target}/debug/tidepath
 fi
-[ -x "$bin" ] || { echo "test_viewer: no tidepath binary at $bin" >&2; exit 1; }
+$install_only || [ -x "$bin" ] || { echo "test_viewer: no tidepath binary at $bin" >&2; exit 1; }
 
 as_root=""
 [ "$(id -u)" -ne 0 ] && as_root=sudo
@@ -34,6 +42,7 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 npm ci --prefix scripts/view_test --no-audit --no-fund --loglevel=error >/dev/null
+$install_only && exit 0
 
 d=$(mktemp -d)
 trap 'rm -rf "$d"' EXIT
@@ -49,11 +58,10 @@ gen() {
     exit 1
   fi
 }
-gen "$d/demo.html" view demo -o "$d/demo.html"
-gen "$d/demo-plan.html" plan demo --planner theta-star --view "$d/demo-plan.html"
+gen "$d/demo.html" plan demo --view "$d/demo.html"
 gen "$d/salish-strait.html" view salish-strait -o "$d/salish-strait.html"
 gen "$d/fleet.html" plan fleet-rendezvous --planner pso --iterations 30 --view "$d/fleet.html"
 gen "$d/simulate.html" simulate coastal-traffic --view "$d/simulate.html"
 
 node scripts/view_test/check_views.mjs --self-test --shots "${VIEW_SHOTS:-target/view-test/shots}" \
-  "$d/demo.html" "$d/demo-plan.html" "$d/salish-strait.html" "$d/fleet.html" "$d/simulate.html"
+  "$d/demo.html" "$d/salish-strait.html" "$d/fleet.html" "$d/simulate.html"

@@ -8,8 +8,11 @@
   "use strict";
   var root = document.documentElement;
   function fail(e) {
+    var message = String((e && e.message) || e);
     root.dataset.tidepathState = "error";
-    root.dataset.tidepathError = String((e && e.message) || e);
+    root.dataset.tidepathError = message;
+    var plot = document.getElementById("tp-plot");
+    if (plot) plot.textContent = "The view could not be drawn: " + message;
     if (window.console) console.error(e);
   }
   try {
@@ -19,6 +22,10 @@
   }
 
   function main() {
+    var probe = document.createElement("canvas");
+    if (!(probe.getContext("webgl2") || probe.getContext("webgl"))) {
+      throw new Error("this browser gives no WebGL context: the 3-D view needs WebGL (enable hardware acceleration or use another browser)");
+    }
     var S = JSON.parse(document.getElementById("tp-scene").textContent);
     var gd = document.getElementById("tp-plot");
     var PALETTE = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2", "#bcbd22", "#7f7f7f"];
@@ -39,9 +46,15 @@
         type: "surface", name: "seabed", x: sb.x, y: sb.y, z: sb.z, surfacecolor: sb.elevation,
         colorscale: sb.colorscale, cmin: sb.cmin, cmax: sb.cmax, showlegend: true,
         colorbar: { title: { text: "elevation (m)", side: "right" }, len: 0.4, y: 0.7, thickness: 14, x: 1.0 },
-        customdata: sb.lonlat || undefined,
-        hovertemplate: (sb.lonlat ? "%{customdata[1]:.4f}°, %{customdata[0]:.4f}°" : "x %{x:.0f} m, y %{y:.0f} m") +
-          "<br>elevation %{surfacecolor:.1f} m<extra>seabed</extra>",
+        // Hover text per node, made here rather than shipped: place and true elevation.
+        text: sb.elevation.map(function (row, j) {
+          return row.map(function (h, i) {
+            var place = sb.lonlat ? degrees(sb.lonlat[j][i][1], "N", "S") + " " + degrees(sb.lonlat[j][i][0], "E", "W")
+              : "x " + sb.x[i].toFixed(0) + " m, y " + sb.y[j].toFixed(0) + " m";
+            return place + "<br>" + (h >= 0 ? "land " + h.toFixed(1) + " m high" : "seabed " + (-h).toFixed(1) + " m deep");
+          });
+        }),
+        hoverinfo: "text",
         lighting: { ambient: 0.65, diffuse: 0.6, specular: 0.05, roughness: 0.9 },
         contours: { z: { show: false } }
       });
@@ -57,7 +70,7 @@
         surfacecolor: wv.frames[0].h, cmin: wv.hmin, cmax: wv.hmax, colorscale: "YlGnBu", reversescale: true,
         opacity: 0.8, showlegend: true, showscale: true,
         colorbar: { title: { text: "waves (m)", side: "right" }, len: 0.3, y: 0.35, thickness: 14, x: 1.0 },
-        hovertemplate: "wave height %{surfacecolor:.2f} m<extra>waves</extra>"
+        text: waveText(wv.frames[0].h), hoverinfo: "text"
       });
     }
 
@@ -70,7 +83,7 @@
         sizemode: "scaled", sizeref: 0.55, anchor: "center", showlegend: true, showscale: true,
         colorscale: "Blues", cmin: 0, cmax: cu.max_speed,
         colorbar: { title: { text: "current (m/s)", side: "right" }, len: 0.3, y: 0.02, yanchor: "bottom", thickness: 14, x: 1.0 },
-        hovertemplate: "current %{norm:.2f} m/s<extra>currents</extra>"
+        hoverinfo: "norm+name"
       });
     }
 
@@ -84,7 +97,7 @@
         type: "mesh3d", name: o.moving ? "moving obstacles" : "obstacles", legendgroup: o.moving ? "moving" : "fixed",
         showlegend: legend, x: o.mesh.x, y: o.mesh.y, z: o.mesh.z, i: o.mesh.i, j: o.mesh.j, k: o.mesh.k,
         color: o.moving ? "#f28e2b" : "#9e2a2b", opacity: o.moving ? 0.8 : 0.55, flatshading: true,
-        hovertemplate: o.name.replace(/%/g, "%%") + "<extra></extra>",
+        text: o.name, hoverinfo: "text",
         lighting: { ambient: 0.6, diffuse: 0.7 }
       });
       if (o.moving || o.from !== null || o.to !== null) dyn.obstacles.push({ trace: i, o: o });
@@ -102,23 +115,22 @@
       dyn.routes.push(traces.length);
       traces.push({
         type: "scatter3d", mode: "lines", name: r.label + (r.feasible ? "" : " (" + r.status + ")"),
-        legendgroup: "route" + k, x: r.x, y: r.y, z: r.z, text: r.hover,
-        hovertemplate: "%{text}<extra></extra>",
+        legendgroup: "route" + k, x: r.x, y: r.y, z: r.z, text: r.hover, hoverinfo: "text",
         line: lineStyle(r, c, k)
       });
       dyn.vehicles.push(traces.length);
       var p = positionAt(r, t0);
       traces.push({
         type: "scatter3d", mode: "markers", name: r.label + " vehicle", legendgroup: "route" + k, showlegend: false,
-        x: [p[0]], y: [p[1]], z: [p[2]], marker: { size: 6, color: c, symbol: "diamond", line: { color: "#111", width: 1 } },
-        hovertemplate: r.label + "<extra>vehicle</extra>"
+        x: [p[0]], y: [p[1]], z: [p[2]], marker: { size: 10, color: c, symbol: "diamond", line: { color: "#111", width: 1.5 } },
+        text: r.label + " (vehicle)", hoverinfo: "text"
       });
       if (r.violations.length) {
         traces.push({
           type: "scatter3d", mode: "markers", name: r.label + ": violations", legendgroup: "route" + k,
           x: r.violations.map(function (v) { return v.x; }), y: r.violations.map(function (v) { return v.y; }),
           z: r.violations.map(function (v) { return v.z; }), text: r.violations.map(function (v) { return v.text; }),
-          marker: { size: 6, color: "#d50000", symbol: "x" }, hovertemplate: "%{text}<extra>violation</extra>"
+          marker: { size: 6, color: "#d50000", symbol: "x" }, hoverinfo: "text"
         });
       }
     });
@@ -129,7 +141,7 @@
       var ph = phaseAt(t0);
       traces.push({
         type: "scatter3d", mode: "lines", name: "route ahead (re-planned)", x: col(ph.route, 0), y: col(ph.route, 1), z: col(ph.route, 2),
-        line: { color: "#444", width: 4, dash: "dash" }, hovertemplate: "route ahead after: " + ph.event.replace(/%/g, "%%") + "<extra></extra>"
+        line: { color: "#444", width: 4, dash: "dash" }, text: "route ahead after: " + ph.event, hoverinfo: "text"
       });
     }
 
@@ -266,13 +278,14 @@
         jobs.push(Plotly.restyle(gd, { u: [f.u], v: [f.v], w: [f.w] }, [dyn.cones]));
       }
       if (dyn.waves >= 0 && S.waves.frames.length > 1) {
-        jobs.push(Plotly.restyle(gd, { surfacecolor: [frameAt(S.waves.frames, t).h] }, [dyn.waves]));
+        var wf = frameAt(S.waves.frames, t).h;
+        jobs.push(Plotly.restyle(gd, { surfacecolor: [wf], text: [waveText(wf)] }, [dyn.waves]));
       }
       if (dyn.phase >= 0) {
         var ph = phaseAt(t);
         jobs.push(Plotly.restyle(gd, {
           x: [col(ph.route, 0)], y: [col(ph.route, 1)], z: [col(ph.route, 2)],
-          hovertemplate: ["route ahead after: " + ph.event.replace(/%/g, "%%") + "<extra></extra>"]
+          text: ["route ahead after: " + ph.event]
         }, [dyn.phase]));
       }
       busy = Promise.all(jobs).then(function () {
@@ -312,6 +325,10 @@
       for (var i = 1; i < S.phases.length; i++) if (S.phases[i].t <= t) p = S.phases[i];
       return p;
     }
+    function waveText(h) {
+      return h.map(function (row) { return row.map(function (v) { return v === null ? "no wave data" : "wave height " + v.toFixed(2) + " m"; }); });
+    }
+    function degrees(v, pos, neg) { return Math.abs(v).toFixed(4) + "°" + (v < 0 ? neg : pos); }
     function col(points, k) { return points.map(function (p) { return p[k]; }); }
     function endMarkers(list, what, colour, symbol) {
       return {
@@ -319,7 +336,7 @@
         y: list.map(function (m) { return m.at[1]; }), z: list.map(function (m) { return m.at[2]; }),
         text: list.map(function (m) { return what + " of " + m.name; }),
         marker: { size: 7, color: colour, symbol: symbol, line: { color: "#fff", width: 1 } },
-        hovertemplate: "%{text}<extra></extra>"
+        hoverinfo: "text"
       };
     }
     function clock(t) {
