@@ -28,6 +28,9 @@
 //! change in the machine's load hits both sides of a ratio alike (ratios of medians measured
 //! minutes apart do not have that). The bench prints each optimizer's median ratio with its
 //! quartiles over both floors and keeps the table in `target/criterion/optim_overhead/ratios.txt`.
+//!
+//! `OPTIM_OVERHEAD_IDS=js,qpso cargo bench -p tidepath --bench optim_overhead` measures only
+//! the listed optimizers (and the bare loop); the table then holds only them.
 
 use std::path::PathBuf;
 use std::sync::Mutex;
@@ -51,9 +54,12 @@ fn objective() -> FunctionObjective {
     FunctionObjective::with_default_range(Function::Rastrigin, DIM)
 }
 
-/// The ids of every optimizer in the planner registry (pso, ga, de, ...).
+/// The ids of every optimizer in the planner registry (pso, ga, de, ...), or of those listed
+/// in `OPTIM_OVERHEAD_IDS` (comma-separated).
 fn optimizer_ids() -> Vec<&'static str> {
-    registry().entries().iter().filter(|e| e.build.is_optimizer()).map(|e| e.id).collect()
+    let only = std::env::var("OPTIM_OVERHEAD_IDS").ok();
+    let listed = |id: &str| only.as_deref().is_none_or(|l| l.split(',').any(|x| x.trim() == id));
+    registry().entries().iter().filter(|e| e.build.is_optimizer() && listed(e.id)).map(|e| e.id).collect()
 }
 
 /// The bare loop's points: `EVALUATIONS` rows of `DIM` values, uniform in the box, fixed seed.
