@@ -194,6 +194,25 @@ pub fn wrap(v: f64, lo: f64, hi: f64) -> f64 {
     super::clamp(out, lo, hi)
 }
 
+/// `row` wrapped into the box coordinate by coordinate, as [`wrap`]. Most rows are already
+/// inside: one branch-free pass checks that (it vectorizes; [`wrap`]'s per-coordinate test does
+/// not), and only a row with a coordinate outside is wrapped, all of it, by [`wrap`] (which
+/// leaves a coordinate inside as it is, so the values are the same either way).
+#[inline]
+pub fn wrap_row(row: &mut [f64], lower: &[f64], upper: &[f64]) {
+    let dim = row.len();
+    let (lower, upper) = (&lower[..dim], &upper[..dim]);
+    let mut inside = true;
+    for ((&v, &lo), &hi) in row.iter().zip(lower).zip(upper) {
+        inside &= (lo <= v) & (v <= hi);
+    }
+    if !inside {
+        for ((v, &lo), &hi) in row.iter_mut().zip(lower).zip(upper) {
+            *v = wrap(*v, lo, hi);
+        }
+    }
+}
+
 /// The index of the lowest cost; ties: the lower index; NaN counts as +inf; 0 when all are
 /// NaN or +inf.
 pub(crate) fn best_index(cost: &[f64]) -> usize {
@@ -336,9 +355,7 @@ impl Optimizer for Js {
                     active(xi, self.x.row(j), self.cost[j] < self.cost[i], &self.u, out);
                 }
             }
-            for ((v, &lo), &hi) in out.iter_mut().zip(ctx.lower()).zip(ctx.upper()) {
-                *v = wrap(*v, lo, hi);
-            }
+            wrap_row(out, ctx.lower(), ctx.upper());
             ctx.repair(out);
         }
         ctx.evaluate_population(&self.cand, &mut self.cand_cost);
