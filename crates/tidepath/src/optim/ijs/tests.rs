@@ -51,6 +51,36 @@ fn groups_by_rank() {
     assert_eq!([group(0, 3), group(1, 3), group(2, 3)], [Group::Elite, Group::Learning, Group::Follower]);
 }
 
+/// The integer sort keys order costs as `total_cmp` does (−0 before +0), and the ranking is
+/// by cost, NaN as +inf, ties by index.
+#[test]
+fn ranking_by_integer_keys() {
+    let values = [
+        f64::NEG_INFINITY,
+        -1e300,
+        -2.5,
+        -f64::MIN_POSITIVE,
+        -5e-324,
+        -0.0,
+        0.0,
+        5e-324,
+        1.0,
+        2.5,
+        1e300,
+        f64::INFINITY,
+    ];
+    for a in values {
+        for b in values {
+            assert_eq!(order_key(a).cmp(&order_key(b)), a.total_cmp(&b), "{a} {b}");
+        }
+    }
+    let mut opt = ijs(IjsParams { population: 7, ..IjsParams::default() });
+    opt.cost = vec![3.0, f64::NAN, -0.0, 3.0, 0.0, f64::INFINITY, -1.0];
+    opt.order = vec![0; 7];
+    opt.rank();
+    assert_eq!(opt.order, [6, 2, 4, 0, 3, 1, 5]);
+}
+
 #[test]
 fn motions_by_hand() {
     let mut out = [0.0; 2];
