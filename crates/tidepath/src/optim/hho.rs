@@ -189,6 +189,8 @@ pub struct Hho {
     z: Population,
     /// The standard normals (z_u, v) of one Z's Lévy steps, in pairs.
     normals: Vec<f64>,
+    /// One Z's Lévy steps LF, from `normals`.
+    lf: Vec<f64>,
     diving: Vec<bool>,
     rabbit: Vec<f64>,
     rabbit_cost: f64,
@@ -209,6 +211,7 @@ impl Hho {
             next: Population::zeros(0, 0),
             z: Population::zeros(0, 0),
             normals: Vec::new(),
+            lf: Vec::new(),
             diving: Vec::new(),
             rabbit: Vec::new(),
             rabbit_cost: f64::INFINITY,
@@ -305,9 +308,10 @@ impl Hho {
                     // Z = Y + S ⊙ LF (eq. 10), from Y before its repair; LF's normals drawn
                     // here, in dive order (dives run one after another: deterministic).
                     fill_standard_normal(ctx.rng(), &mut self.normals);
+                    self.levy.steps_from(&self.normals, &mut self.lf);
                     let (y, s) = (self.next.row(i), self.z.row(i));
-                    for (((c, &y), &s), p) in self.cand.iter_mut().zip(y).zip(s).zip(self.normals.chunks_exact(2)) {
-                        *c = y + s * self.levy.step_from(p[0], p[1]);
+                    for (((c, &y), &s), &l) in self.cand.iter_mut().zip(y).zip(s).zip(&self.lf) {
+                        *c = y + s * l;
                     }
                     if self.try_dive(ctx, i) {
                         self.next.row_mut(i).copy_from_slice(&self.cand);
@@ -335,6 +339,7 @@ impl Optimizer for Hho {
         self.next = Population::zeros(n, dim);
         self.z = Population::zeros(n, dim);
         self.normals = vec![0.0; 2 * dim];
+        self.lf = vec![0.0; dim];
         self.diving = vec![false; n];
         self.rabbit = self.x.row(0).to_vec();
         self.rabbit_cost = f64::INFINITY;

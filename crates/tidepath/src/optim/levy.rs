@@ -58,13 +58,28 @@ pub fn gamma(x: f64) -> f64 {
 /// on every machine. Zero, subnormal, infinite and NaN inputs go to `f64::cbrt`.
 #[inline]
 pub fn cbrt(a: f64) -> f64 {
-    if !(f64::MIN_POSITIVE..f64::INFINITY).contains(&a) {
+    if !cbrt_is_fast(a) {
         return a.cbrt();
     }
+    cbrt_normal(a)
+}
+
+/// Whether [`cbrt`] takes its own steps for `a` (a positive normal number), not `f64::cbrt`.
+#[inline(always)]
+fn cbrt_is_fast(a: f64) -> bool {
+    (f64::MIN_POSITIVE..f64::INFINITY).contains(&a)
+}
+
+/// [`cbrt`]'s steps for a positive normal `a`, without a branch (so a loop of it vectorizes);
+/// any other `a` gives a meaningless number. `hi / 3` for the high word `hi` < 2^32 is taken as
+/// `hi · 0xAAAAAAAB >> 33`, the same integer (the compiler's own division by 3 in 32 bits), in a
+/// product that vector units have.
+#[inline(always)]
+fn cbrt_normal(a: f64) -> f64 {
     // musl's B1 = (1023 − 1023/3 − 0.03306235651) · 2^20 on the high word.
     const B1: u64 = 715_094_163;
     let hi = a.to_bits() >> 32;
-    let mut y = f64::from_bits((hi / 3 + B1) << 32);
+    let mut y = f64::from_bits((((hi * 0xAAAA_AAAB) >> 33) + B1) << 32);
     for _ in 0..2 {
         let y3 = y * y * y;
         y *= (y3 + 2.0 * a) / (2.0 * y3 + a);
@@ -110,6 +125,37 @@ impl Levy {
         self.scale * self.sigma * z_u / d
     }
 
+    /// `out[k]` = [`Levy::step_from`]`(z[2k], z[2k + 1])`, the same bits. At β = 1.5 every
+    /// step is first computed without a branch (a loop that vectorizes: the steps' divisions
+    /// overlap), then the rare ones the branches would have handled otherwise (v = 0, or |v|²
+    /// not a positive normal number) are recomputed one by one.
+    pub fn steps_from(&self, z: &[f64], out: &mut [f64]) {
+        let z = &z[..2 * out.len()];
+        if self.beta != BETA {
+            for (o, p) in out.iter_mut().zip(z.chunks_exact(2)) {
+                *o = self.step_from(p[0], p[1]);
+            }
+            return;
+        }
+        // step_from's `scale · σ · z_u / d` multiplies left to right: (scale σ) z_u.
+        let factor = self.scale * self.sigma;
+        let mut rare = false;
+        for (o, p) in out.iter_mut().zip(z.chunks_exact(2)) {
+            let av = p[1].abs();
+            let a = av * av;
+            *o = factor * p[0] / cbrt_normal(a);
+            rare |= !cbrt_is_fast(a) | (p[1] == 0.0);
+        }
+        if rare {
+            for (o, p) in out.iter_mut().zip(z.chunks_exact(2)) {
+                let av = p[1].abs();
+                if !cbrt_is_fast(av * av) || p[1] == 0.0 {
+                    *o = self.step_from(p[0], p[1]);
+                }
+            }
+        }
+    }
+
     /// One step: two standard normals from `rng` (u's, then v's).
     #[inline]
     pub fn sample(&self, rng: &mut Rng) -> f64 {
@@ -127,9 +173,7 @@ impl Levy {
         for chunk in out.chunks_mut(CHUNK) {
             let z = &mut z[..2 * chunk.len()];
             fill_standard_normal(rng, z);
-            for (o, p) in chunk.iter_mut().zip(z.chunks_exact(2)) {
-                *o = self.step_from(p[0], p[1]);
-            }
+            self.steps_from(z, chunk);
         }
     }
 }
@@ -197,6 +241,30 @@ mod tests {
             (2.0, 3.0, 0.0, 1e-320f64.cbrt().to_bits())
         );
         assert!(cbrt(f64::NAN).is_nan() && cbrt(f64::INFINITY) == f64::INFINITY);
+    }
+
+    /// The branch-free steps are `step_from`'s, bit for bit, the rare cases included (v = 0,
+    /// |v|² subnormal, zero or infinite), at β = 1.5 and at another β; and the high word's
+    /// division by 3 by multiplication is the division.
+    #[test]
+    fn bulk_steps_equal_single_steps() {
+        for hi in (0..1u64 << 32).step_by(65_537).chain([0, 1, 2, 3, (1 << 32) - 1, (1 << 32) - 2, 0x7fef_ffff]) {
+            assert_eq!((hi * 0xAAAA_AAAB) >> 33, hi / 3, "{hi}");
+        }
+        let mut rng = run_rng(6, 0);
+        let mut z = vec![0.0; 2_000];
+        fill_standard_normal(&mut rng, &mut z);
+        let rare = [0.0, -0.0, 1e-160, -1e-170, 1e-320, 1e200, -1e300, f64::INFINITY, f64::NAN, 1e-154];
+        for (k, &v) in rare.iter().enumerate() {
+            z[2 * (37 * k + 3) + 1] = v;
+        }
+        for l in [Levy::new(BETA, 0.05), Levy::new(1.2, 1.0)] {
+            let mut out = vec![0.0; 1_000];
+            l.steps_from(&z, &mut out);
+            for (k, (o, p)) in out.iter().zip(z.chunks_exact(2)).enumerate() {
+                assert_eq!(o.to_bits(), l.step_from(p[0], p[1]).to_bits(), "{k}: {p:?}");
+            }
+        }
     }
 
     #[test]
