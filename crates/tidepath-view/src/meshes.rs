@@ -9,9 +9,42 @@ use tidepath::geom::{Vec2, Vec3};
 use tidepath::world::Shape;
 
 /// Segments around a sphere's or cylinder's axis, and a sphere's rings: smooth enough to read
-/// as round, few enough that 4,096 obstacles stay a few megabytes.
+/// as round. A world of many obstacles gets [`Detail::Coarse`] meshes (a quarter of the
+/// vertices), so 4,096 spheres stay about 10 MB of page.
 const AROUND: usize = 20;
 const RINGS: usize = 10;
+
+/// How finely round shapes are cut.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Detail {
+    Fine,
+    Coarse,
+}
+
+impl Detail {
+    /// Fine up to 256 obstacles, coarse beyond.
+    pub fn for_count(n: usize) -> Self {
+        if n <= 256 {
+            Detail::Fine
+        } else {
+            Detail::Coarse
+        }
+    }
+
+    fn around(self) -> usize {
+        match self {
+            Detail::Fine => AROUND,
+            Detail::Coarse => AROUND / 2,
+        }
+    }
+
+    fn rings(self) -> usize {
+        match self {
+            Detail::Fine => RINGS,
+            Detail::Coarse => RINGS / 2,
+        }
+    }
+}
 
 /// Vertices (x, y, z) and triangles (i, j, k index triples), rounded to a tenth of a metre.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -63,36 +96,37 @@ impl Mesh {
 }
 
 /// The mesh of `shape`, with unbounded vertical extents cut to [`z_lo`, `z_hi`].
-pub fn shape_mesh(shape: &Shape, z_lo: f64, z_hi: f64) -> Mesh {
+pub fn shape_mesh(shape: &Shape, z_lo: f64, z_hi: f64, detail: Detail) -> Mesh {
     let clamp = |z: f64| z.clamp(z_lo, z_hi);
     match *shape {
-        Shape::Sphere { center, radius } => sphere(center, radius),
-        Shape::Cylinder { center, radius, z_min, z_max } => prism(center, radius, clamp(z_min), clamp(z_max)),
-        Shape::Circle { center, radius } => prism(center, radius, z_lo, z_hi),
+        Shape::Sphere { center, radius } => sphere(center, radius, detail),
+        Shape::Cylinder { center, radius, z_min, z_max } => prism(center, radius, clamp(z_min), clamp(z_max), detail),
+        Shape::Circle { center, radius } => prism(center, radius, z_lo, z_hi, detail),
         Shape::Box { min, max } => cuboid(Vec3::new(min.x, min.y, clamp(min.z)), Vec3::new(max.x, max.y, clamp(max.z))),
     }
 }
 
-fn sphere(c: Vec3, r: f64) -> Mesh {
+fn sphere(c: Vec3, r: f64, detail: Detail) -> Mesh {
+    let (around, rings) = (detail.around(), detail.rings());
     let mut m = Mesh::default();
     let top = m.vertex(c + Vec3::Z * r);
-    // Rings 1..RINGS-1 between the poles, AROUND vertices each.
-    for ring in 1..RINGS {
-        let polar = std::f64::consts::PI * ring as f64 / RINGS as f64;
-        for s in 0..AROUND {
-            let az = std::f64::consts::TAU * s as f64 / AROUND as f64;
+    // Rings 1..rings-1 between the poles, around vertices each.
+    for ring in 1..rings {
+        let polar = std::f64::consts::PI * ring as f64 / rings as f64;
+        for s in 0..around {
+            let az = std::f64::consts::TAU * s as f64 / around as f64;
             let d = Vec3::new(polar.sin() * az.cos(), polar.sin() * az.sin(), polar.cos());
             m.vertex(c + d * r);
         }
     }
     let bottom = m.vertex(c - Vec3::Z * r);
-    let at = |ring: usize, s: usize| (1 + (ring - 1) * AROUND + s % AROUND) as u32;
-    for s in 0..AROUND {
+    let at = |ring: usize, s: usize| (1 + (ring - 1) * around + s % around) as u32;
+    for s in 0..around {
         m.triangle(top, at(1, s), at(1, s + 1));
-        m.triangle(bottom, at(RINGS - 1, s + 1), at(RINGS - 1, s));
+        m.triangle(bottom, at(rings - 1, s + 1), at(rings - 1, s));
     }
-    for ring in 1..RINGS - 1 {
-        for s in 0..AROUND {
+    for ring in 1..rings - 1 {
+        for s in 0..around {
             let (a, b, c2, d) = (at(ring, s), at(ring, s + 1), at(ring + 1, s), at(ring + 1, s + 1));
             m.triangle(a, c2, b);
             m.triangle(b, c2, d);
@@ -102,19 +136,20 @@ fn sphere(c: Vec3, r: f64) -> Mesh {
 }
 
 /// A vertical cylinder with caps (a polygon of [`AROUND`] sides).
-fn prism(c: Vec2, r: f64, z0: f64, z1: f64) -> Mesh {
+fn prism(c: Vec2, r: f64, z0: f64, z1: f64, detail: Detail) -> Mesh {
+    let around = detail.around();
     let mut m = Mesh::default();
     let bottom_centre = m.vertex(Vec3::new(c.x, c.y, z0));
     let top_centre = m.vertex(Vec3::new(c.x, c.y, z1));
-    for s in 0..AROUND {
-        let az = std::f64::consts::TAU * s as f64 / AROUND as f64;
+    for s in 0..around {
+        let az = std::f64::consts::TAU * s as f64 / around as f64;
         let (x, y) = (c.x + r * az.cos(), c.y + r * az.sin());
         m.vertex(Vec3::new(x, y, z0));
         m.vertex(Vec3::new(x, y, z1));
     }
-    let lo = |s: usize| (2 + 2 * (s % AROUND)) as u32;
-    let hi = |s: usize| (3 + 2 * (s % AROUND)) as u32;
-    for s in 0..AROUND {
+    let lo = |s: usize| (2 + 2 * (s % around)) as u32;
+    let hi = |s: usize| (3 + 2 * (s % around)) as u32;
+    for s in 0..around {
         m.triangle(lo(s), lo(s + 1), hi(s));
         m.triangle(hi(s), lo(s + 1), hi(s + 1));
         m.triangle(bottom_centre, lo(s + 1), lo(s));
@@ -153,7 +188,7 @@ mod tests {
     #[test]
     fn a_sphere_s_vertices_lie_on_it() {
         let c = Vec3::new(100.0, -50.0, -300.0);
-        let m = shape_mesh(&Shape::Sphere { center: c, radius: 40.0 }, -1e4, 0.0);
+        let m = shape_mesh(&Shape::Sphere { center: c, radius: 40.0 }, -1e4, 0.0, Detail::Fine);
         // Two poles and RINGS - 1 rings; a closed surface of 2 * AROUND * (RINGS - 1) triangles.
         assert_eq!(m.vertices(), 2 + AROUND * (RINGS - 1));
         assert_eq!(m.triangles(), 2 * AROUND * (RINGS - 1));
@@ -171,7 +206,7 @@ mod tests {
             z_min: f64::NEG_INFINITY,
             z_max: f64::INFINITY,
         };
-        let m = shape_mesh(&shape, -500.0, 0.0);
+        let m = shape_mesh(&shape, -500.0, 0.0, Detail::Fine);
         assert_eq!(m.triangles(), 4 * AROUND);
         assert!(indices_in_range(&m));
         let zs = points(&m).iter().map(|p| p.z).collect::<Vec<_>>();
@@ -184,8 +219,12 @@ mod tests {
 
     #[test]
     fn a_box_has_its_eight_corners_and_twelve_triangles() {
-        let m =
-            shape_mesh(&Shape::Box { min: Vec3::new(0.0, 0.0, -10.0), max: Vec3::new(2.0, 3.0, -4.0) }, -100.0, 0.0);
+        let m = shape_mesh(
+            &Shape::Box { min: Vec3::new(0.0, 0.0, -10.0), max: Vec3::new(2.0, 3.0, -4.0) },
+            -100.0,
+            0.0,
+            Detail::Fine,
+        );
         assert_eq!((m.vertices(), m.triangles()), (8, 12));
         assert!(indices_in_range(&m));
         assert!(points(&m).contains(&Vec3::new(2.0, 3.0, -4.0)));
@@ -199,8 +238,19 @@ mod tests {
     }
 
     #[test]
+    fn coarse_spheres_have_a_quarter_of_the_vertices_and_stay_on_the_sphere() {
+        let c = Vec3::new(0.0, 0.0, -50.0);
+        let m = shape_mesh(&Shape::Sphere { center: c, radius: 10.0 }, -100.0, 0.0, Detail::Coarse);
+        assert_eq!(m.vertices(), 2 + (AROUND / 2) * (RINGS / 2 - 1));
+        assert!(indices_in_range(&m));
+        assert!(points(&m).iter().all(|p| (p.distance(c) - 10.0).abs() < 0.1));
+        assert_eq!(Detail::for_count(256), Detail::Fine);
+        assert_eq!(Detail::for_count(257), Detail::Coarse);
+    }
+
+    #[test]
     fn appending_shifts_indices() {
-        let a = shape_mesh(&Shape::Box { min: Vec3::ZERO, max: Vec3::ONE }, -1.0, 1.0);
+        let a = shape_mesh(&Shape::Box { min: Vec3::ZERO, max: Vec3::ONE }, -1.0, 1.0, Detail::Fine);
         let mut all = a.clone();
         all.append(&a);
         assert_eq!(all.vertices(), 16);

@@ -9,7 +9,7 @@
 use serde_json::{json, Value};
 use tidepath::world::{Obstacle, Shape};
 
-use crate::meshes::{shape_mesh, Mesh};
+use crate::meshes::{shape_mesh, Detail, Mesh};
 use crate::{poll, Stopped};
 
 /// One epoch: shown from `from` until `to` (`None`: unbounded), with these obstacles.
@@ -43,13 +43,14 @@ pub fn obstacles_json(
     stop: &dyn Fn() -> bool,
 ) -> Result<Value, Stopped> {
     let mut out = Vec::new();
+    let detail = Detail::for_count(epochs.iter().map(|e| e.obstacles.len()).max().unwrap_or(0));
     for e in epochs {
         let mut fixed = Mesh::default();
         for (k, o) in e.obstacles.iter().enumerate() {
             if k % 64 == 0 {
                 poll(stop)?;
             }
-            let mesh = shape_mesh(&o.shape, z_lo, z_hi);
+            let mesh = shape_mesh(&o.shape, z_lo, z_hi, detail);
             if o.is_fixed() {
                 fixed.append(&mesh);
                 continue;

@@ -19,6 +19,11 @@ use crate::lattice::{m, round};
 use crate::obstacles::EpochObstacles;
 use crate::{poll, Stopped, ViewRoute};
 
+/// Points of one route given the full hover text; a longer route (a flown curve, a plan file of
+/// 100,000 points) gives it to every k-th point and its clock alone to the rest, so the page
+/// grows by about 60 bytes a point, not 300.
+pub const FULL_HOVER_POINTS: usize = 2000;
+
 /// Where the page takes each route's data from: the scenario (clock, frame, cost model) and the
 /// true world's obstacles over time.
 pub struct RouteContext<'a> {
@@ -124,12 +129,17 @@ pub fn route_json(cx: &RouteContext<'_>, r: &ViewRoute, stop: &dyn Fn() -> bool)
     let seg_terms = cx.segment_terms(r);
     let three_d = cx.world.dims == Dims::Three;
     let mut hover = Vec::with_capacity(n);
+    let stride = n.div_ceil(FULL_HOVER_POINTS).max(1);
     for k in 0..n {
         if k % 64 == 0 {
             poll(stop)?;
         }
         let (p, t) = (pts[k], ts[k]);
         let mut lines = vec![format!("<b>{}</b>", r.label), clock_text(cx.scenario, t)];
+        if k % stride != 0 && k + 1 != n {
+            hover.push(lines.join("<br>"));
+            continue;
+        }
         if let Some(f) = &cx.scenario.frame {
             let (lon, lat) = f.inverse(p.x, p.y);
             lines.push(format!("{} {}", crate::axes::degrees(lat, 'N', 'S'), crate::axes::degrees(lon, 'E', 'W')));

@@ -163,3 +163,34 @@ fn a_geographic_scenario_has_longitude_and_latitude_axes() {
     // Nothing timed and nothing moving: one instant.
     assert_eq!(s["time"]["start"], s["time"]["end"]);
 }
+
+#[test]
+fn a_long_route_keeps_full_hover_text_on_every_kth_point() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = tidepath(&["plan", "demo", "--planner", "pso", "--iterations", "20", "--out", "p.json"], dir.path());
+    assert!(matches!(o.status.code(), Some(0 | 1)));
+    let plan: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("p.json")).unwrap()).unwrap();
+    // The plan's path cut into 6,000 points along the same segments.
+    let wp: Vec<[f64; 3]> = serde_json::from_value(plan["missions"][0]["waypoints"].clone()).unwrap();
+    let per = 6000 / (wp.len() - 1);
+    let mut dense = Vec::new();
+    for w in wp.windows(2) {
+        for k in 0..per {
+            let s = k as f64 / per as f64;
+            dense.push([0, 1, 2].map(|i| w[0][i] + s * (w[1][i] - w[0][i])));
+        }
+    }
+    dense.push(*wp.last().unwrap());
+    std::fs::write(dir.path().join("dense.json"), serde_json::json!({ "waypoints": dense }).to_string()).unwrap();
+    let v = tidepath(&["view", "demo", "dense.json", "-o", "v.html"], dir.path());
+    assert_eq!(v.status.code(), Some(0), "{}", String::from_utf8_lossy(&v.stderr));
+    let s = scene(&dir.path().join("v.html"));
+    let hover: Vec<&str> = s["routes"][0]["hover"].as_array().unwrap().iter().map(|h| h.as_str().unwrap()).collect();
+    assert_eq!(hover.len(), dense.len());
+    let full = hover.iter().filter(|h| h.contains("segment")).count();
+    // Every third point of 6,000-odd (the stride that keeps 2,000), and the last.
+    assert!((2000..=2100).contains(&full), "{full} full hover texts");
+    assert!(hover[0].contains("segment") && !hover[1].contains("segment") && hover[1].contains("t = "));
+    assert!(hover.last().unwrap().contains("segment"));
+}
