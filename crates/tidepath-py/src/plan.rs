@@ -23,6 +23,11 @@ impl PyPlan {
         Self { report, frame: scenario.frame.clone(), epoch: scenario.epoch }
     }
 
+    /// The report, for the viewer.
+    pub fn report(&self) -> &PlanReport {
+        &self.report
+    }
+
     fn georef(&self) -> Georef<'_> {
         Georef { frame: self.frame.as_ref(), epoch: self.epoch }
     }

@@ -301,6 +301,61 @@ impl PyScenario {
         Ok(PyPlan::new(report, sc))
     }
 
+    /// The interactive 3-D view of this scenario and `plans` (each a `Plan` of it), as the
+    /// HTML `tidepath view` writes: one self-contained page that opens offline. Written to
+    /// `path` when given (all or nothing); returned either way (a notebook shows it with
+    /// `IPython.display.HTML`).
+    #[pyo3(signature = (plans = Vec::new(), path = None, title = None))]
+    fn view(
+        &self,
+        py: Python<'_>,
+        plans: Vec<PyRef<'_, PyPlan>>,
+        path: Option<std::path::PathBuf>,
+        title: Option<String>,
+    ) -> PyResult<String> {
+        let mut outputs = tidepath_io::Outputs::new();
+        let id = match &path {
+            Some(p) => {
+                let ext = p.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+                if !matches!(ext.as_deref(), Some("html" | "htm")) {
+                    return Err(err(Error::input("path", format!("`{}`: the view is written as .html", p.display()))));
+                }
+                Some(outputs.declare("path", p).map_err(err)?)
+            }
+            None => None,
+        };
+        let mut routes = Vec::new();
+        for p in &plans {
+            let r = p.report();
+            if r.scenario != self.inner.name || r.missions.len() != self.inner.missions.len() {
+                return Err(err(Error::input(
+                    "plans",
+                    format!(
+                        "a plan of `{}` with {} mission(s) cannot be shown on `{}`",
+                        r.scenario,
+                        r.missions.len(),
+                        self.inner.name
+                    ),
+                )));
+            }
+            routes.extend(tidepath_view::report_routes(r));
+        }
+        let title = title.unwrap_or_else(|| self.inner.name.clone());
+        let input =
+            tidepath_view::ViewInput { scenario: &self.inner, title, routes, simulation: None, simulation_mission: 0 };
+        let stop = Arc::new(AtomicBool::new(false));
+        let flag = stop.clone();
+        let html = interruptible(py, &stop, move || {
+            tidepath_view::render_view(&input, &|| flag.load(std::sync::atomic::Ordering::Relaxed))
+        })?
+        .map_err(|_| pyo3::exceptions::PyKeyboardInterrupt::new_err("the view was not built"))?;
+        if let Some(id) = id {
+            outputs.fill(id, html.clone());
+            outputs.commit().map_err(err)?;
+        }
+        Ok(html)
+    }
+
     /// Judges one path per mission (an `(n, 3)` array, or a list of them), start and goal
     /// included, as `tidepath eval` does. Returns a dict: `cost` (all missions, with the
     /// fleet's terms), `feasible`, `status`, `terms` (summed over missions), `violations`

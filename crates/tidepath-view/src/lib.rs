@@ -101,6 +101,22 @@ impl ViewRoute {
     }
 }
 
+/// The routes of a plan report, one per mission (the smoothed path where smoothed, missions
+/// with nothing planned left out); a fleet's vehicles each get their own colour.
+pub fn report_routes(report: &tidepath_io::PlanReport) -> Vec<ViewRoute> {
+    let several = report.missions.len() > 1;
+    report
+        .missions
+        .iter()
+        .enumerate()
+        .filter(|(_, m)| m.waypoints.len() >= 2)
+        .map(|(k, m)| {
+            let label = if several { format!("{} {}", report.planner, m.name) } else { report.planner.clone() };
+            ViewRoute::from_report(label.clone(), label, k, m)
+        })
+        .collect()
+}
+
 /// Everything one view shows.
 pub struct ViewInput<'a> {
     pub scenario: &'a Scenario,

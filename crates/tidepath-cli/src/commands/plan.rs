@@ -181,9 +181,9 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
         outputs.fill(id, figure(&scenario, &report, reference.as_ref())?);
     }
     if let Some(id) = view_id {
-        let mut routes = super::view::report_routes(&report);
+        let mut routes = tidepath_view::report_routes(&report);
         if let Some(r) = reference.as_ref().filter(|r| r.status.is_success()) {
-            for mut route in super::view::report_routes(r) {
+            for mut route in tidepath_view::report_routes(r) {
                 route.label = format!("reference: {}", route.label);
                 routes.push(route);
             }

@@ -81,22 +81,6 @@ pub fn build(input: &ViewInput<'_>) -> Option<String> {
     render_view(input, &stop).ok()
 }
 
-/// The routes of a plan report, one per mission (the smoothed path where smoothed); a fleet's
-/// vehicles each get their own colour.
-pub fn report_routes(report: &tidepath_io::PlanReport) -> Vec<ViewRoute> {
-    let several = report.missions.len() > 1;
-    report
-        .missions
-        .iter()
-        .enumerate()
-        .filter(|(_, m)| m.waypoints.len() >= 2)
-        .map(|(k, m)| {
-            let label = if several { format!("{} {}", report.planner, m.name) } else { report.planner.clone() };
-            ViewRoute::from_report(label.clone(), label, k, m)
-        })
-        .collect()
-}
-
 /// Each planner's best run of a comparison (lowest cost), every mission of it, judged on the
 /// scenario again for its clock and verdict.
 pub fn comparison_routes(
