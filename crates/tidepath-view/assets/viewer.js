@@ -173,7 +173,9 @@
         xaxis: axis(geo ? "longitude" : "east (m)", bx, geo && geo.x),
         yaxis: axis(geo ? "latitude" : "north (m)", by, geo && geo.y),
         zaxis: flatWorld ? { range: zr, showticklabels: false, title: { text: "" }, showbackground: false, gridcolor: "#e3e8ed" } : axis("elevation (m)", zr, null),
-        camera: { eye: { x: -0.72, y: -1.02, z: 0.62 }, center: { x: 0, y: 0, z: -0.12 } }
+        // A flat world is read from higher up: nothing hides behind anything.
+        camera: flatWorld ? { eye: { x: -0.25, y: -0.8, z: 0.95 }, center: { x: 0, y: 0, z: -0.05 } }
+          : { eye: { x: -0.72, y: -1.02, z: 0.62 }, center: { x: 0, y: 0, z: -0.12 } }
       },
       uirevision: "keep"
     };
