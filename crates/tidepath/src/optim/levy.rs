@@ -71,19 +71,37 @@ fn cbrt_is_fast(a: f64) -> bool {
 }
 
 /// [`cbrt`]'s steps for a positive normal `a`, without a branch (so a loop of it vectorizes);
-/// any other `a` gives a meaningless number. `hi / 3` for the high word `hi` < 2^32 is taken as
-/// `hi · 0xAAAAAAAB >> 33`, the same integer (the compiler's own division by 3 in 32 bits), in a
-/// product that vector units have.
+/// any other `a` gives a meaningless number.
 #[inline(always)]
 fn cbrt_normal(a: f64) -> f64 {
+    let mut y = cbrt_guess(a);
+    for _ in 0..2 {
+        y = cbrt_halley(y, a);
+    }
+    cbrt_newton(y, a)
+}
+
+/// [`cbrt`]'s first guess from the exponent bits of `a` (positive normal). `hi / 3` for the
+/// high word `hi` < 2^32 is taken as `hi · 0xAAAAAAAB >> 33`, the same integer (the compiler's
+/// own division by 3 in 32 bits), in a product that vector units have.
+#[inline(always)]
+fn cbrt_guess(a: f64) -> f64 {
     // musl's B1 = (1023 − 1023/3 − 0.03306235651) · 2^20 on the high word.
     const B1: u64 = 715_094_163;
     let hi = a.to_bits() >> 32;
-    let mut y = f64::from_bits((((hi * 0xAAAA_AAAB) >> 33) + B1) << 32);
-    for _ in 0..2 {
-        let y3 = y * y * y;
-        y *= (y3 + 2.0 * a) / (2.0 * y3 + a);
-    }
+    f64::from_bits((((hi * 0xAAAA_AAAB) >> 33) + B1) << 32)
+}
+
+/// One of [`cbrt`]'s Halley steps from `y` toward the cube root of `a`.
+#[inline(always)]
+fn cbrt_halley(y: f64, a: f64) -> f64 {
+    let y3 = y * y * y;
+    y * ((y3 + 2.0 * a) / (2.0 * y3 + a))
+}
+
+/// [`cbrt`]'s closing Newton step.
+#[inline(always)]
+fn cbrt_newton(y: f64, a: f64) -> f64 {
     y - (y * y * y - a) / (3.0 * y * y)
 }
 
@@ -140,11 +158,30 @@ impl Levy {
         // step_from's `scale · σ · z_u / d` multiplies left to right: (scale σ) z_u.
         let factor = self.scale * self.sigma;
         let mut rare = false;
-        for (o, p) in out.iter_mut().zip(z.chunks_exact(2)) {
-            let av = p[1].abs();
-            let a = av * av;
-            *o = factor * p[0] / cbrt_normal(a);
-            rare |= !cbrt_is_fast(a) | (p[1] == 0.0);
+        // The cube roots a stage at a time over a block of steps: each stage's loop has short,
+        // independent iterations, so the divisions of many steps overlap (in one loop of the
+        // whole chain, each step waits on four divisions in a row).
+        const BLOCK: usize = 32;
+        let (mut a, mut y) = ([0.0f64; BLOCK], [0.0f64; BLOCK]);
+        for (zb, ob) in z.chunks(2 * BLOCK).zip(out.chunks_mut(BLOCK)) {
+            let (a, y) = (&mut a[..ob.len()], &mut y[..ob.len()]);
+            for ((a, y), p) in a.iter_mut().zip(y.iter_mut()).zip(zb.chunks_exact(2)) {
+                let av = p[1].abs();
+                *a = av * av;
+                *y = cbrt_guess(*a);
+                rare |= !cbrt_is_fast(*a) | (p[1] == 0.0);
+            }
+            for _ in 0..2 {
+                for (y, &a) in y.iter_mut().zip(a.iter()) {
+                    *y = cbrt_halley(*y, a);
+                }
+            }
+            for (y, &a) in y.iter_mut().zip(a.iter()) {
+                *y = cbrt_newton(*y, a);
+            }
+            for ((o, p), &d) in ob.iter_mut().zip(zb.chunks_exact(2)).zip(y.iter()) {
+                *o = factor * p[0] / d;
+            }
         }
         if rare {
             for (o, p) in out.iter_mut().zip(z.chunks_exact(2)) {
