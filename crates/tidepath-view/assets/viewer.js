@@ -45,7 +45,7 @@
       traces.push({
         type: "surface", name: "seabed", x: sb.x, y: sb.y, z: sb.z, surfacecolor: sb.elevation,
         colorscale: sb.colorscale, cmin: sb.cmin, cmax: sb.cmax, showlegend: true,
-        colorbar: { title: { text: "elevation (m)", side: "right" }, len: 0.4, y: 0.7, thickness: 14, x: 1.0 },
+        colorbar: { title: { text: "elevation (m)", side: "right" }, len: 0.28, y: 0.83, thickness: 14, x: 1.0 },
         // Hover text per node, made here rather than shipped: place and true elevation.
         text: sb.elevation.map(function (row, j) {
           return row.map(function (h, i) {
@@ -69,7 +69,7 @@
         type: "surface", name: "waves (significant height)", x: wv.x, y: wv.y, z: flat,
         surfacecolor: wv.frames[0].h, cmin: wv.hmin, cmax: wv.hmax, colorscale: "YlGnBu", reversescale: true,
         opacity: 0.8, showlegend: true, showscale: true,
-        colorbar: { title: { text: "waves (m)", side: "right" }, len: 0.3, y: 0.35, thickness: 14, x: 1.0 },
+        colorbar: { title: { text: "waves (m)", side: "right" }, len: 0.28, y: 0.5, thickness: 14, x: 1.0 },
         text: waveText(wv.frames[0].h), hoverinfo: "text"
       });
     }
@@ -82,7 +82,7 @@
         type: "cone", name: "currents", x: cu.x, y: cu.y, z: cu.z, u: f0.u, v: f0.v, w: f0.w,
         sizemode: "scaled", sizeref: 0.55, anchor: "center", showlegend: true, showscale: true,
         colorscale: "Blues", cmin: 0, cmax: cu.max_speed,
-        colorbar: { title: { text: "current (m/s)", side: "right" }, len: 0.3, y: 0.02, yanchor: "bottom", thickness: 14, x: 1.0 },
+        colorbar: { title: { text: "current (m/s)", side: "right" }, len: 0.28, y: 0.17, thickness: 14, x: 1.0 },
         hoverinfo: "norm+name"
       });
     }
