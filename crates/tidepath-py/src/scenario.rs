@@ -314,16 +314,8 @@ impl PyScenario {
         title: Option<String>,
     ) -> PyResult<String> {
         let mut outputs = tidepath_io::Outputs::new();
-        let id = match &path {
-            Some(p) => {
-                let ext = p.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-                if !matches!(ext.as_deref(), Some("html" | "htm")) {
-                    return Err(err(Error::input("path", format!("`{}`: the view is written as .html", p.display()))));
-                }
-                Some(outputs.declare("path", p).map_err(err)?)
-            }
-            None => None,
-        };
+        let id =
+            path.as_deref().map(|p| tidepath_view::declare_output(&mut outputs, "path", p)).transpose().map_err(err)?;
         let mut routes = Vec::new();
         for p in &plans {
             let r = p.report();

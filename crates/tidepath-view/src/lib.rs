@@ -101,6 +101,21 @@ impl ViewRoute {
     }
 }
 
+/// Declares a view output in `outputs` (written all or nothing on commit), refusing any
+/// extension but .html: a view is never a plan file. The CLI's `--view`/`--out` and Python's
+/// `Scenario.view(path=...)` share this rule.
+pub fn declare_output(
+    outputs: &mut tidepath_io::Outputs,
+    field: &str,
+    path: &std::path::Path,
+) -> tidepath::error::Result<tidepath_io::OutputId> {
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    if !matches!(ext.as_deref(), Some("html" | "htm")) {
+        return Err(tidepath::Error::input(field, format!("`{}`: the view is written as .html", path.display())));
+    }
+    outputs.declare(field, path)
+}
+
 /// The routes of a plan report, one per mission (the smoothed path where smoothed, missions
 /// with nothing planned left out); a fleet's vehicles each get their own colour.
 pub fn report_routes(report: &tidepath_io::PlanReport) -> Vec<ViewRoute> {

@@ -94,7 +94,7 @@ pub fn run(args: &CompareArgs) -> Result<Outcome, Error> {
         }
     }
     let ompl_id = args.ompl_log.as_deref().map(|p| outputs.declare("--ompl-log", p)).transpose()?;
-    let view_id = args.view.as_deref().map(|p| super::view::declare(&mut outputs, "--view", p)).transpose()?;
+    let view_id = args.view.as_deref().map(|p| tidepath_view::declare_output(&mut outputs, "--view", p)).transpose()?;
 
     let all = args.planners.len() * args.runs as usize;
     let total = share.map_or(all, |s| s.size(all));

@@ -103,7 +103,7 @@ pub fn run(args: &PlanArgs) -> Result<Outcome, Error> {
     let out_id = args.out.as_deref().map(|p| outputs.declare("--out", p)).transpose()?;
     let plot_id = args.plot.as_deref().map(|p| outputs.declare("--plot", p)).transpose()?;
     let graph_id = args.graph.as_deref().map(|p| outputs.declare("--graph", p)).transpose()?;
-    let view_id = args.view.as_deref().map(|p| super::view::declare(&mut outputs, "--view", p)).transpose()?;
+    let view_id = args.view.as_deref().map(|p| tidepath_view::declare_output(&mut outputs, "--view", p)).transpose()?;
     let out_format = args.out.as_deref().map(|p| ExportFormat::of(p, "--out")).transpose()?;
     let graph_format = args.graph.as_deref().map(|p| GraphFormat::of(p, "--graph")).transpose()?;
     if args.plot_graph && args.plot.is_none() {

@@ -104,7 +104,7 @@ pub fn run(args: &SimulateArgs) -> Result<Outcome, Error> {
     let mut outputs = Outputs::new();
     let out_id = args.out.as_deref().map(|p| outputs.declare("--out", p)).transpose()?;
     let plot_id = args.plot.as_deref().map(|p| outputs.declare("--plot", p)).transpose()?;
-    let view_id = args.view.as_deref().map(|p| super::view::declare(&mut outputs, "--view", p)).transpose()?;
+    let view_id = args.view.as_deref().map(|p| tidepath_view::declare_output(&mut outputs, "--view", p)).transpose()?;
     if let Some(p) = &args.out {
         if p.extension().and_then(|e| e.to_str()) != Some("json") {
             return Err(Error::input("--out", format!("`{}`: the simulation is written as .json", p.display())));

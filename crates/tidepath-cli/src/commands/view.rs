@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use tidepath::Error;
 use tidepath_io::scenario::{self, Scenario};
-use tidepath_io::{OutputId, Outputs};
+use tidepath_io::Outputs;
 use tidepath_view::{render_view, ViewInput, ViewRoute};
 
 use crate::Outcome;
@@ -30,7 +30,7 @@ pub fn run(args: &ViewArgs) -> Result<Outcome, Error> {
         eprintln!("warning: {w}");
     }
     let mut outputs = Outputs::new();
-    let id = declare(&mut outputs, "--out", &args.out)?;
+    let id = tidepath_view::declare_output(&mut outputs, "--out", &args.out)?;
     let mut routes = Vec::new();
     for (k, path) in args.plans.iter().enumerate() {
         let file = tidepath_io::routes::read(path)?;
@@ -59,15 +59,6 @@ pub fn run(args: &ViewArgs) -> Result<Outcome, Error> {
     outputs.commit()?;
     println!("Wrote {} ({:.1} MB)", args.out.display(), file_mb(&args.out));
     Ok(Outcome::Success)
-}
-
-/// Declares a view output, refusing any extension but .html (a view is never a plan file).
-pub fn declare(outputs: &mut Outputs, flag: &str, path: &Path) -> Result<OutputId, Error> {
-    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-    if !matches!(ext.as_deref(), Some("html" | "htm")) {
-        return Err(Error::input(flag, format!("`{}`: the view is written as .html", path.display())));
-    }
-    outputs.declare(flag, path)
 }
 
 /// The page, or `None` when Ctrl-C stopped it (nothing is written then). After a run that
