@@ -49,7 +49,12 @@ fn every_planner_with_a_radius_and_dubins_smoothing_passes_the_rechecker() {
         let mut feasible = Vec::new();
         for entry in PLANNERS {
             let req = request(entry.id, Some("dubins"), 11);
-            let runs: Vec<_> = pools.iter().map(|p| p.install(|| s.plan(&req, &mut |_| {}))).collect();
+            // The one-thread and four-thread runs side by side (they are compared, not ordered).
+            let runs: Vec<_> = std::thread::scope(|scope| {
+                let handles: Vec<_> =
+                    pools.iter().map(|p| scope.spawn(|| p.install(|| s.plan(&req, &mut |_| {})))).collect();
+                handles.into_iter().map(|h| h.join().expect("plan thread")).collect()
+            });
             let runs = match runs.into_iter().collect::<Result<Vec<_>, _>>() {
                 Ok(r) => r,
                 Err(e) => {

@@ -56,7 +56,14 @@ fn every_registered_planner_meets_the_interface() {
                 iterations,
                 ..PlanRequest::default()
             };
-            let runs: Vec<_> = pools.iter().map(|p| p.install(|| s.plan_in(&components, &req, &mut |_| {}))).collect();
+            // The one-thread and four-thread runs side by side (they are compared, not ordered).
+            let runs: Vec<_> = std::thread::scope(|scope| {
+                let handles: Vec<_> = pools
+                    .iter()
+                    .map(|p| scope.spawn(|| p.install(|| s.plan_in(&components, &req, &mut |_| {}))))
+                    .collect();
+                handles.into_iter().map(|h| h.join().expect("plan thread")).collect()
+            });
             let runs: Vec<_> = match runs.into_iter().collect::<Result<Vec<_>, _>>() {
                 Ok(r) => r,
                 Err(e) => {

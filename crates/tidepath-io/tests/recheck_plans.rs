@@ -23,7 +23,9 @@ fn scenarios() -> Vec<Scenario> {
 #[test]
 fn no_disagreement_over_a_thousand_plans_from_every_planner() {
     use rayon::prelude::*;
-    const SEEDS: u64 = 160;
+    // 64 seeds cover every iteration count (6 + seed % 20) with and without the smoother, in
+    // each world: about 2,800 feasible plans in all, at least about 70 per optimizer.
+    const SEEDS: u64 = 64;
     let worlds = scenarios();
     // The planners run side by side (each plan itself on one thread): the runs are independent
     // and the test's verdicts do not depend on their order.
@@ -81,7 +83,7 @@ fn no_disagreement_over_a_thousand_plans_from_every_planner() {
     let mut total = 0;
     for (id, feasible, runs, secs, optimizer) in results {
         eprintln!("{id}: {feasible} feasible plans re-checked of {runs} ({secs:.1} s)");
-        let wanted = if optimizer { 100 } else { 1 };
+        let wanted = if optimizer { 40 } else { 1 };
         assert!(feasible >= wanted, "{id}: only {feasible} feasible plans");
         total += feasible;
     }

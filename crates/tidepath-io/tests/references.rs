@@ -125,12 +125,15 @@ fn headland_default_plan_is_within_one_percent_of_visibility() {
         assert!(l <= best * 1.01, "seed {seed}: {l} m against visibility's {best} m");
     }
     // Every optimizer over the default (sliced) encoding.
-    for id in tidepath::planner::PLANNERS.iter().filter(|e| e.build.is_optimizer()).map(|e| e.id) {
+    // Side by side: each run is independent (and single-threaded where it does not pay).
+    use rayon::prelude::*;
+    let ids: Vec<&str> = tidepath::planner::PLANNERS.iter().filter(|e| e.build.is_optimizer()).map(|e| e.id).collect();
+    ids.par_iter().for_each(|&id| {
         let r =
             s.plan(&PlanRequest { planner: Some(id.into()), seed: 1, ..PlanRequest::default() }, &mut |_| {}).unwrap();
         assert_eq!(r.status, Status::Infeasible, "{id}");
         assert!(r.reason.contains("sliced encoding cannot go back"), "{id}: {}", r.reason);
-    }
+    });
 }
 
 /// The hint is not given where forward-only routes exist: short sliced runs on `demo` and
