@@ -42,19 +42,13 @@ fn request(planner: &str, smoother: Option<&str>, seed: u64) -> PlanRequest {
 /// not plan a world say why; at least one plan per world must be feasible and re-checked.
 #[test]
 fn every_planner_with_a_radius_and_dubins_smoothing_passes_the_rechecker() {
-    let pools: Vec<rayon::ThreadPool> =
-        [1, 4].iter().map(|&n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap()).collect();
+    let pools = common::one_and_four_threads();
     for (name, radius) in [("demo", 150.0), ("salish", 200.0), ("headland", 60.0)] {
         let s = with_radius(name, radius);
         let mut feasible = Vec::new();
         for entry in PLANNERS {
             let req = request(entry.id, Some("dubins"), 11);
-            // The one-thread and four-thread runs side by side (they are compared, not ordered).
-            let runs: Vec<_> = std::thread::scope(|scope| {
-                let handles: Vec<_> =
-                    pools.iter().map(|p| scope.spawn(|| p.install(|| s.plan(&req, &mut |_| {})))).collect();
-                handles.into_iter().map(|h| h.join().expect("plan thread")).collect()
-            });
+            let runs = common::in_each_pool(&pools, || s.plan(&req, &mut |_| {}));
             let runs = match runs.into_iter().collect::<Result<Vec<_>, _>>() {
                 Ok(r) => r,
                 Err(e) => {

@@ -31,8 +31,7 @@ fn request(planner: &str, seed: u64) -> PlanRequest {
 /// `planner.params.ID.FIELD`, flags it cannot honour refused naming the flag.
 #[test]
 fn every_registered_planner_meets_the_interface() {
-    let pools: Vec<rayon::ThreadPool> =
-        [1, 4].iter().map(|&n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap()).collect();
+    let pools = common::one_and_four_threads();
     let components = Components { planners: toys::planners(), ..Components::default() };
     for entry in components.planners.entries() {
         let caps = entry.build.caps;
@@ -56,14 +55,7 @@ fn every_registered_planner_meets_the_interface() {
                 iterations,
                 ..PlanRequest::default()
             };
-            // The one-thread and four-thread runs side by side (they are compared, not ordered).
-            let runs: Vec<_> = std::thread::scope(|scope| {
-                let handles: Vec<_> = pools
-                    .iter()
-                    .map(|p| scope.spawn(|| p.install(|| s.plan_in(&components, &req, &mut |_| {}))))
-                    .collect();
-                handles.into_iter().map(|h| h.join().expect("plan thread")).collect()
-            });
+            let runs = common::in_each_pool(&pools, || s.plan_in(&components, &req, &mut |_| {}));
             let runs: Vec<_> = match runs.into_iter().collect::<Result<Vec<_>, _>>() {
                 Ok(r) => r,
                 Err(e) => {

@@ -337,6 +337,20 @@ pub fn recheck_arrivals(s: &Scenario, r: &PlanReport) -> Result<(), String> {
     }
 }
 
+/// A one-thread and a four-thread rayon pool, for runs that must not depend on the thread count.
+pub fn one_and_four_threads() -> Vec<rayon::ThreadPool> {
+    [1, 4].iter().map(|&n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap()).collect()
+}
+
+/// `run` once in each pool, the pools side by side (the results are compared, not ordered),
+/// in pool order.
+pub fn in_each_pool<T: Send>(pools: &[rayon::ThreadPool], run: impl Fn() -> T + Sync) -> Vec<T> {
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = pools.iter().map(|p| scope.spawn(|| p.install(&run))).collect();
+        handles.into_iter().map(|h| h.join().expect("run thread")).collect()
+    })
+}
+
 /// The re-checker for vehicles with a turning radius (the flown fillet curve).
 pub mod flown;
 
