@@ -95,6 +95,7 @@ impl<'a> Context<'a> {
 
     /// True once the run's stop flag is raised or its deadline has passed: for algorithms
     /// with inner loops (scouting wolves, jellyfish phases, ant tours) to leave them early.
+    #[inline]
     pub fn should_stop(&mut self) -> bool {
         if !self.interrupted {
             self.interrupted = self.termination.is_some_and(|t| t.interrupted().is_some());
@@ -102,6 +103,7 @@ impl<'a> Context<'a> {
         self.interrupted
     }
 
+    #[inline]
     pub fn dim(&self) -> usize {
         self.objective.dim()
     }
@@ -129,8 +131,16 @@ impl<'a> Context<'a> {
     }
 
     /// The run's random stream. Draw everything an iteration needs from here, in a fixed order.
+    #[inline]
     pub fn rng(&mut self) -> &mut Rng {
         self.rng
+    }
+
+    /// The random stream and the bounds at once ([`Context::rng`], [`Context::lower`],
+    /// [`Context::upper`]), for a loop that draws and reads the box in the same pass.
+    #[inline]
+    pub fn rng_and_bounds(&mut self) -> (&mut Rng, &[f64], &[f64]) {
+        (self.rng, &self.lower, &self.upper)
     }
 
     /// The warm-start points of this run (already inside the bounds and repaired).
@@ -143,6 +153,7 @@ impl<'a> Context<'a> {
     /// the plain box clamp once the run is interrupted, so loops that repair a whole population
     /// (an initial swarm of thousands) end with the run's clock; nothing repaired after that is
     /// evaluated.
+    #[inline]
     pub fn repair(&self, x: &mut [f64]) {
         if self.parallel_hint && (self.interrupted || self.termination.is_some_and(|t| t.interrupted().is_some())) {
             for ((v, &lo), &hi) in x.iter_mut().zip(&self.lower).zip(&self.upper) {
@@ -153,15 +164,18 @@ impl<'a> Context<'a> {
         self.objective.repair(x)
     }
 
+    #[inline]
     pub fn evaluations(&self) -> u64 {
         self.evaluations
     }
 
+    #[inline]
     pub fn remaining_evaluations(&self) -> u64 {
         self.eval_limit - self.evaluations
     }
 
     /// True once the evaluation budget is spent.
+    #[inline]
     pub fn exhausted(&self) -> bool {
         self.evaluations >= self.eval_limit
     }
