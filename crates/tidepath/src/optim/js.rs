@@ -66,7 +66,9 @@ use rand::Rng as _;
 use super::fa::progress;
 use super::{Context, Optimizer, Population, MAX_POPULATION};
 use crate::params::{Bound, Checked, Range};
-use crate::rng::{fill_unit_f64, fill_unit_f64_32};
+#[cfg(any(test, doc))]
+use crate::rng::fill_unit_f64_32;
+use crate::rng::{fill_u32, fill_unit_f64, unit_f64_32};
 
 crate::params! {
     /// JS parameters. Defaults: Chou & Truong 2021.
@@ -181,8 +183,10 @@ pub fn wrap(v: f64, lo: f64, hi: f64) -> f64 {
         return super::clamp(v, lo, hi);
     }
     // The excess d > 0 beyond the bound, reduced by whole widths into (0, w].
+    // Most excesses are below one width, where the remainder is d itself (f64 `%` is libm's
+    // fmod, a call): the same value without it.
     let reduce = |d: f64| {
-        let r = d % w;
+        let r = if d < w { d } else { d % w };
         if r == 0.0 {
             w
         } else {
@@ -210,6 +214,123 @@ pub fn wrap_row(row: &mut [f64], lower: &[f64], upper: &[f64]) {
         for ((v, &lo), &hi) in row.iter_mut().zip(lower).zip(upper) {
             *v = wrap(*v, lo, hi);
         }
+    }
+}
+
+/// Whether `v` is in `[lo, hi]`, without a branch (so loops over coordinates vectorize).
+#[inline(always)]
+fn in_box(v: f64, lo: f64, hi: f64) -> bool {
+    (lo <= v) & (v <= hi)
+}
+
+/// [`wrap`] on every coordinate of `row`.
+#[inline(never)]
+fn wrap_each(row: &mut [f64], lower: &[f64], upper: &[f64]) {
+    for ((v, &lo), &hi) in row.iter_mut().zip(lower).zip(upper) {
+        *v = wrap(*v, lo, hi);
+    }
+}
+
+/// [`ocean_current`] with `u` the 32-bit uniforms of the stream words `words`
+/// ([`unit_f64_32`], as [`fill_unit_f64_32`] converts them), in one pass that also checks the
+/// box: true when every coordinate of `out` is inside `[lower, upper]`. The same values as
+/// [`fill_unit_f64_32`] then [`ocean_current`].
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub(crate) fn ocean_current_words(
+    x: &[f64],
+    best: &[f64],
+    mean: &[f64],
+    beta_r: f64,
+    words: &[u32],
+    lower: &[f64],
+    upper: &[f64],
+    out: &mut [f64],
+) -> bool {
+    let dim = out.len();
+    let (x, best, mean, words, lower, upper) =
+        (&x[..dim], &best[..dim], &mean[..dim], &words[..dim], &lower[..dim], &upper[..dim]);
+    let mut inside = true;
+    for d in 0..dim {
+        let v = x[d] + unit_f64_32(words[d]) * (best[d] - beta_r * mean[d]);
+        out[d] = v;
+        inside &= in_box(v, lower[d], upper[d]);
+    }
+    inside
+}
+
+/// [`passive`] and the box check of [`ocean_current_words`] in one pass.
+#[inline]
+pub(crate) fn passive_checked(x: &[f64], gamma_r: f64, lower: &[f64], upper: &[f64], out: &mut [f64]) -> bool {
+    let dim = out.len();
+    let (x, lower, upper) = (&x[..dim], &lower[..dim], &upper[..dim]);
+    let mut inside = true;
+    for d in 0..dim {
+        let v = x[d] + gamma_r * (upper[d] - lower[d]);
+        out[d] = v;
+        inside &= in_box(v, lower[d], upper[d]);
+    }
+    inside
+}
+
+/// [`active`] with `u` from the stream words `words` ([`unit_f64_32`]), the same values as
+/// [`fill_unit_f64_32`] then [`active`].
+#[inline]
+pub(crate) fn active_words(x: &[f64], xj: &[f64], toward: bool, words: &[u32], out: &mut [f64]) {
+    let dim = out.len();
+    let (x, xj, words) = (&x[..dim], &xj[..dim], &words[..dim]);
+    let sign = if toward { 1.0 } else { -1.0 };
+    for d in 0..dim {
+        let a = x[d];
+        out[d] = a + unit_f64_32(words[d]) * (sign * (xj[d] - a));
+    }
+}
+
+/// Whether every coordinate of `row` is inside `[lower, upper]`.
+#[inline]
+fn row_in_box(row: &[f64], lower: &[f64], upper: &[f64]) -> bool {
+    let dim = row.len();
+    let (lower, upper) = (&lower[..dim], &upper[..dim]);
+    let mut inside = true;
+    for d in 0..dim {
+        inside &= in_box(row[d], lower[d], upper[d]);
+    }
+    inside
+}
+
+/// `mean` = the mean of `pop`'s rows: each coordinate summed over the rows in row order,
+/// starting from 0, then divided by the number of rows. Eight coordinates at a time are summed
+/// in registers across all rows (a row at a time would load and store every partial sum once
+/// per row); the additions, and so the values, are the same.
+pub(crate) fn mean_rows(pop: &Population, mean: &mut [f64]) {
+    const LANES: usize = 8;
+    let (n, dim) = (pop.len(), pop.dim());
+    if dim == 0 {
+        return;
+    }
+    let flat = &pop.as_flat()[..n * dim];
+    let mean = &mut mean[..dim];
+    let mut d0 = 0;
+    while d0 + LANES <= dim {
+        let mut acc = [0.0f64; LANES];
+        for row in flat.chunks_exact(dim) {
+            let row = &row[d0..d0 + LANES];
+            for k in 0..LANES {
+                acc[k] += row[k];
+            }
+        }
+        mean[d0..d0 + LANES].copy_from_slice(&acc);
+        d0 += LANES;
+    }
+    for (d, m) in mean.iter_mut().enumerate().skip(d0) {
+        let mut sum = 0.0;
+        for row in flat.chunks_exact(dim) {
+            sum += row[d];
+        }
+        *m = sum;
+    }
+    for m in mean.iter_mut() {
+        *m /= n as f64;
     }
 }
 
@@ -246,8 +367,8 @@ pub struct Js {
     /// The start of the iteration's best jellyfish x* and mean μ.
     best: Vec<f64>,
     mean: Vec<f64>,
-    /// A move's U(0, 1) draws.
-    u: Vec<f64>,
+    /// A move's U(0, 1) draws, as the stream's 32-bit words ([`unit_f64_32`] converts them).
+    words: Vec<u32>,
     /// Iterations started, for the iteration-based progress.
     iteration: u64,
 }
@@ -262,7 +383,7 @@ impl Js {
             cand_cost: Vec::new(),
             best: Vec::new(),
             mean: Vec::new(),
-            u: Vec::new(),
+            words: Vec::new(),
             iteration: 0,
         }
     }
@@ -309,7 +430,7 @@ impl Optimizer for Js {
         self.cand_cost = vec![f64::INFINITY; n];
         self.best = vec![0.0; dim];
         self.mean = vec![0.0; dim];
-        self.u = vec![0.0; dim];
+        self.words = vec![0; dim];
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
@@ -321,41 +442,39 @@ impl Optimizer for Js {
         self.iteration += 1;
         let p = &self.params;
         self.best.copy_from_slice(self.x.row(best_index(&self.cost)));
-        self.mean.fill(0.0);
-        for row in self.x.rows() {
-            for (m, &v) in self.mean.iter_mut().zip(row) {
-                *m += v;
-            }
-        }
-        for m in self.mean.iter_mut() {
-            *m /= n as f64;
-        }
+        mean_rows(&self.x, &mut self.mean);
         for i in 0..n {
             if i % POLL_JELLYFISH == 0 && i > 0 && ctx.should_stop() {
                 return;
             }
-            let c = time_control(frac, ctx.rng().random::<f64>());
-            let r = if c >= p.c0 { 0.0 } else { ctx.rng().random::<f64>() };
+            let (rng, lower, upper) = ctx.rng_and_bounds();
+            let c = time_control(frac, rng.random::<f64>());
+            let r = if c >= p.c0 { 0.0 } else { rng.random::<f64>() };
             let out = self.cand.row_mut(i);
             let xi = self.x.row(i);
-            match choose_move(c, p.c0, r) {
+            // Each move checks the box as it writes the candidate; a candidate with a
+            // coordinate outside is wrapped (coordinates inside stay as they are).
+            let inside = match choose_move(c, p.c0, r) {
                 JsMove::OceanCurrent => {
-                    let beta_r = p.beta * ctx.rng().random::<f64>();
-                    fill_unit_f64_32(ctx.rng(), &mut self.u);
-                    ocean_current(xi, &self.best, &self.mean, beta_r, &self.u, out);
+                    let beta_r = p.beta * rng.random::<f64>();
+                    fill_u32(rng, &mut self.words);
+                    ocean_current_words(xi, &self.best, &self.mean, beta_r, &self.words, lower, upper, out)
                 }
                 JsMove::Passive => {
-                    let gamma_r = p.gamma * ctx.rng().random::<f64>();
-                    passive(xi, gamma_r, ctx.lower(), ctx.upper(), out);
+                    let gamma_r = p.gamma * rng.random::<f64>();
+                    passive_checked(xi, gamma_r, lower, upper, out)
                 }
                 JsMove::Active => {
-                    let j = ctx.rng().random_range(0..n - 1);
+                    let j = rng.random_range(0..n - 1);
                     let j = if j >= i { j + 1 } else { j };
-                    fill_unit_f64_32(ctx.rng(), &mut self.u);
-                    active(xi, self.x.row(j), self.cost[j] < self.cost[i], &self.u, out);
+                    fill_u32(rng, &mut self.words);
+                    active_words(xi, self.x.row(j), self.cost[j] < self.cost[i], &self.words, out);
+                    row_in_box(out, lower, upper)
                 }
+            };
+            if !inside {
+                wrap_each(out, lower, upper);
             }
-            wrap_row(out, ctx.lower(), ctx.upper());
             ctx.repair(out);
         }
         ctx.evaluate_population(&self.cand, &mut self.cand_cost);
