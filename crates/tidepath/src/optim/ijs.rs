@@ -65,10 +65,14 @@
 use rand::Rng as _;
 
 use super::fa::progress;
-use super::js::{active, best_index, POLL_JELLYFISH};
+#[cfg(doc)]
+use super::js::active;
+use super::js::{active_words, best_index, POLL_JELLYFISH};
 use super::{Context, Optimizer, Population, MAX_POPULATION};
 use crate::params::{Bound, Checked, Range};
+#[cfg(any(test, doc))]
 use crate::rng::fill_unit_f64_32;
+use crate::rng::{fill_u32, unit_f64_32};
 
 crate::params! {
     /// IJS parameters. Defaults: ijs2023.
@@ -141,6 +145,41 @@ pub fn memory_current(x: &[f64], g: &[f64], p: &[f64], factor: f64, u1: &[f64], 
     }
 }
 
+/// [`restricted_global`] with `u` the 32-bit uniforms of the stream words `words`
+/// ([`unit_f64_32`]): the same values as [`fill_unit_f64_32`] then [`restricted_global`].
+#[inline]
+fn restricted_global_words(x: &[f64], rl: f64, words: &[u32], lower: &[f64], upper: &[f64], out: &mut [f64]) {
+    let dim = out.len();
+    let (x, words, lower, upper) = (&x[..dim], &words[..dim], &lower[..dim], &upper[..dim]);
+    for d in 0..dim {
+        let (a, lo, hi) = (x[d], lower[d], upper[d]);
+        let target = lo + unit_f64_32(words[d]) * (hi - lo);
+        out[d] = a + rl * (target - a);
+    }
+}
+
+/// [`local_following`] with `u` from the stream words `words` ([`unit_f64_32`]).
+#[inline]
+fn local_following_words(x: &[f64], g: &[f64], p: &[f64], words: &[u32], out: &mut [f64]) {
+    let dim = out.len();
+    let (x, g, p, words) = (&x[..dim], &g[..dim], &p[..dim], &words[..dim]);
+    for d in 0..dim {
+        let a = x[d];
+        out[d] = a + unit_f64_32(words[d]) * ((g[d] + p[d]) * 0.5 - a);
+    }
+}
+
+/// [`memory_current`] with `u1`, `u2` from the stream words `w1`, `w2` ([`unit_f64_32`]).
+#[inline]
+fn memory_current_words(x: &[f64], g: &[f64], p: &[f64], factor: f64, w1: &[u32], w2: &[u32], out: &mut [f64]) {
+    let dim = out.len();
+    let (x, g, p, w1, w2) = (&x[..dim], &g[..dim], &p[..dim], &w1[..dim], &w2[..dim]);
+    for d in 0..dim {
+        let (a, u1, u2) = (x[d], unit_f64_32(w1[d]), unit_f64_32(w2[d]));
+        out[d] = a + factor * u1 * (g[d] - a) + factor * u2 * (p[d] - a);
+    }
+}
+
 /// `x`'s bits as an integer in `f64::total_cmp`'s order: `order_key(a) < order_key(b)` exactly
 /// when `a.total_cmp(&b)` is `Less` (the sign bit flipped for positives, every bit for
 /// negatives).
@@ -167,11 +206,12 @@ pub struct Ijs {
     cand_cost: Vec<f64>,
     /// Jellyfish indices by cost at the start of the iteration, best first.
     order: Vec<usize>,
-    /// The ranking's sort keys ([`Ijs::rank`]).
+    /// The ranking's sort keys ([`Ijs::rank`]): 64-bit, and 128-bit when those are not enough.
+    short_keys: Vec<u64>,
     keys: Vec<u128>,
-    /// A move's U(0, 1) draws.
-    u1: Vec<f64>,
-    u2: Vec<f64>,
+    /// A move's U(0, 1) draws, as the stream's 32-bit words ([`unit_f64_32`] converts them).
+    w1: Vec<u32>,
+    w2: Vec<u32>,
     /// Iterations started, for the iteration-based progress.
     iteration: u64,
 }
@@ -189,9 +229,10 @@ impl Ijs {
             cand: Population::zeros(0, 0),
             cand_cost: Vec::new(),
             order: Vec::new(),
+            short_keys: Vec::new(),
             keys: Vec::new(),
-            u1: Vec::new(),
-            u2: Vec::new(),
+            w1: Vec::new(),
+            w2: Vec::new(),
             iteration: 0,
         }
     }
@@ -209,11 +250,37 @@ impl Ijs {
     /// by `total_cmp`). Sorted as integers: each jellyfish's cost in `total_cmp`'s order
     /// ([`order_key`]) in the high 64 bits, its index in the low, so one integer comparison
     /// is the whole test (a comparator that looks the costs up is several times slower).
+    ///
+    /// First tried with 64-bit keys, which sort faster: the cost's key with its low bits
+    /// replaced by the index (as many bits as the largest index needs). That order is the
+    /// full one unless two costs differ only in those low bits; so it is kept only if every
+    /// neighbour pair is in the full order (then the sequence is sorted by the full keys,
+    /// which are distinct, and so is the one ranking), else the 128-bit keys are sorted.
     fn rank(&mut self) {
+        let cost_key = |c: f64| order_key(if c.is_nan() { f64::INFINITY } else { c });
+        let n = self.cost.len();
+        let bits = usize::BITS - n.saturating_sub(1).leading_zeros();
+        let mask = (1u64 << bits) - 1;
+        self.short_keys.clear();
+        for (k, &c) in self.cost.iter().enumerate() {
+            self.short_keys.push((cost_key(c) & !mask) | k as u64);
+        }
+        self.short_keys.sort_unstable();
+        let cost = &self.cost;
+        let in_full_order = self.short_keys.windows(2).all(|w| {
+            let (i, j) = ((w[0] & mask) as usize, (w[1] & mask) as usize);
+            let (a, b) = (cost_key(cost[i]), cost_key(cost[j]));
+            a < b || (a == b && i < j)
+        });
+        if in_full_order {
+            for (o, &key) in self.order.iter_mut().zip(&self.short_keys) {
+                *o = (key & mask) as usize;
+            }
+            return;
+        }
         self.keys.clear();
         for (k, &c) in self.cost.iter().enumerate() {
-            let c = if c.is_nan() { f64::INFINITY } else { c };
-            self.keys.push((u128::from(order_key(c)) << 64) | k as u128);
+            self.keys.push((u128::from(cost_key(c)) << 64) | k as u128);
         }
         self.keys.sort_unstable();
         for (o, &key) in self.order.iter_mut().zip(&self.keys) {
@@ -266,8 +333,8 @@ impl Optimizer for Ijs {
         self.cand = Population::zeros(n, dim);
         self.cand_cost = vec![f64::INFINITY; n];
         self.order = (0..n).collect();
-        self.u1 = vec![0.0; dim];
-        self.u2 = vec![0.0; dim];
+        self.w1 = vec![0; dim];
+        self.w2 = vec![0; dim];
     }
 
     fn step(&mut self, ctx: &mut Context<'_>) {
@@ -286,27 +353,28 @@ impl Optimizer for Ijs {
             let i = self.order[k];
             let out = self.cand.row_mut(i);
             let (xi, pi) = (self.x.row(i), self.memory.row(i));
+            let (rng, lower, upper) = ctx.rng_and_bounds();
             match group(k, n) {
                 Group::Elite => {
-                    let s = ctx.rng().random::<f64>();
-                    fill_unit_f64_32(ctx.rng(), &mut self.u1);
+                    let s = rng.random::<f64>();
+                    fill_u32(rng, &mut self.w1);
                     // eq. 11's "rand ≥ 0.5" for the default share 0.5.
                     if s >= 1.0 - global_share {
-                        restricted_global(xi, rl, &self.u1, ctx.lower(), ctx.upper(), out);
+                        restricted_global_words(xi, rl, &self.w1, lower, upper, out);
                     } else {
-                        local_following(xi, &self.global, pi, &self.u1, out);
+                        local_following_words(xi, &self.global, pi, &self.w1, out);
                     }
                 }
                 Group::Learning => {
-                    let j = ctx.rng().random_range(0..n - 1);
+                    let j = rng.random_range(0..n - 1);
                     let j = if j >= i { j + 1 } else { j };
-                    fill_unit_f64_32(ctx.rng(), &mut self.u1);
-                    active(xi, self.x.row(j), self.cost[j] < self.cost[i], &self.u1, out);
+                    fill_u32(rng, &mut self.w1);
+                    active_words(xi, self.x.row(j), self.cost[j] < self.cost[i], &self.w1, out);
                 }
                 Group::Follower => {
-                    fill_unit_f64_32(ctx.rng(), &mut self.u1);
-                    fill_unit_f64_32(ctx.rng(), &mut self.u2);
-                    memory_current(xi, &self.global, pi, factor, &self.u1, &self.u2, out);
+                    fill_u32(rng, &mut self.w1);
+                    fill_u32(rng, &mut self.w2);
+                    memory_current_words(xi, &self.global, pi, factor, &self.w1, &self.w2, out);
                 }
             }
             ctx.repair(out);
@@ -318,7 +386,18 @@ impl Optimizer for Ijs {
             // Interrupted: which rows were evaluated is not known here; the run ends.
             return;
         }
-        // All rows, or (the budget ran out) the first `evaluated` rows.
+        if evaluated == n {
+            // Every jellyfish takes its candidate: the populations trade places instead of
+            // copying rows (this iteration's positions are overwritten by the next one's
+            // candidates before they are read).
+            std::mem::swap(&mut self.x, &mut self.cand);
+            std::mem::swap(&mut self.cost, &mut self.cand_cost);
+            for k in 0..n {
+                self.remember(self.order[k]);
+            }
+            return;
+        }
+        // The budget ran out: the first `evaluated` rows.
         for k in 0..n {
             let i = self.order[k];
             if i >= evaluated {

@@ -79,6 +79,14 @@ fn ranking_by_integer_keys() {
     opt.order = vec![0; 7];
     opt.rank();
     assert_eq!(opt.order, [6, 2, 4, 0, 3, 1, 5]);
+    // Costs that differ only in their last bits (where the 64-bit keys hold the index): the
+    // full order still decides, not the index.
+    let one_up = f64::from_bits(1.0f64.to_bits() + 1);
+    let mut opt = ijs(IjsParams { population: 4, ..IjsParams::default() });
+    opt.cost = vec![one_up, 1.0, 2.0, 1.0];
+    opt.order = vec![0; 4];
+    opt.rank();
+    assert_eq!(opt.order, [1, 3, 0, 2]);
 }
 
 #[test]
