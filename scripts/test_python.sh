@@ -2,17 +2,19 @@
 # Builds the `tidepath` Python wheel (crates/tidepath-py) with maturin, installs it into a
 # virtual environment and runs its pytest suite (issue #36). Exits non-zero on any failure.
 #
-#   bash scripts/test_python.sh            # venv in target/py-venv, reused between runs
+#   bash scripts/test_python.sh                  # venv in target/py-venv, reused between runs
+#   bash scripts/test_python.sh --install-only   # only the venv and its Python packages
 #
 # Environment: TIDEPATH_PY_VENV (venv folder), TIDEPATH_PY_PROFILE (cargo profile of the
-# wheel, default `py`: the test profile's settings, see Cargo.toml), TIDEPATH_PY_EXTRAS=0 to
+# wheel, default `dev`: the settings `cargo test` uses, so the wheel reuses the crates the test
+# command compiled; see Cargo.toml and crates/tidepath-py/Cargo.toml), TIDEPATH_PY_EXTRAS=0 to
 # skip the optional packages (pandas, dask[distributed]; their tests then skip, saying why).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 target=${CARGO_TARGET_DIR:-$root/target}
 venv=${TIDEPATH_PY_VENV:-$target/py-venv}
-profile=${TIDEPATH_PY_PROFILE:-py}
+profile=${TIDEPATH_PY_PROFILE:-dev}
 
 if [ ! -x "$venv/bin/python" ]; then
   python3 -m venv "$venv"
@@ -23,10 +25,14 @@ if [ "${TIDEPATH_PY_EXTRAS:-1}" != 0 ]; then
   "$py" -m pip install -q --disable-pip-version-check pandas "dask[distributed]" \
     || echo "warning: pandas / dask[distributed] not installed: their tests skip" >&2
 fi
+# `--install-only`: only the virtual environment and its packages (.ci/run fetches them while
+# cargo builds: the download is network-bound, the build CPU-bound).
+[ "${1:-}" = "--install-only" ] && exit 0
 
-# The CLI the tests compare against, from the same tree (a no-op after `cargo test`, which
-# builds it in the test profile).
-cargo build -q --locked --profile test -p tidepath-cli --bin tidepath
+# The CLI the tests compare against, from the same tree: a no-op after the README's
+# `cargo test --workspace`, which builds it (`cargo build -p tidepath-cli` would compile most
+# dependencies again: built alone, they get other features than in the workspace's test build).
+cargo test -q --locked --workspace --no-run
 export TIDEPATH_CLI="$target/debug/tidepath"
 
 wheels=$(mktemp -d)

@@ -24,8 +24,10 @@ if $install_only; then
 elif [ -n "${TIDEPATH_BIN:-}" ]; then
   bin=$TIDEPATH_BIN
 else
-  # A no-op after `cargo test`, which builds the CLI in the test profile.
-  cargo build -q --locked --profile test -p tidepath-cli --bin tidepath
+  # A no-op after the README's `cargo test --workspace`, which builds the CLI (the CLI tests run
+  # it). Not `cargo build -p tidepath-cli`: built alone, the CLI's dependencies get other
+  # features than in the workspace's test build, and Cargo compiles most of them again.
+  cargo test -q --locked --workspace --no-run
   bin=${CARGO_TARGET_DIR:-target}/debug/tidepath
 fi
 $install_only || [ -x "$bin" ] || { echo "test_viewer: no tidepath binary at $bin" >&2; exit 1; }
