@@ -3,6 +3,7 @@
 # random-disc worlds, back to back on this machine. See docs/ompl-benchmark.md.
 #
 #   scripts/ompl_bench/run.sh [--quick] [--seeds N] [--worlds K] [--iterations N] [--repeat R] [--out DIR]
+#                             [--tidepath BIN] [--install-only]
 #
 # --quick: 1 world, 2 seeds, 2000 iterations, 1 repeat (explicit flags still win). Default:
 # 3 worlds, 5 seeds, 10,000 iterations, 3 repeats of every (world, seed) (the table takes each
@@ -11,15 +12,18 @@
 # Writes DIR/worlds/ (the scenario TOMLs and the OMPL text worlds), DIR/runs/ (each run's path
 # and plan), DIR/results.csv (one row per planner run), DIR/summary.md (the table it prints).
 # Build outputs go to target/ompl_bench/build/. Installs libompl-dev with apt-get when missing.
+# --tidepath BIN: run this tidepath instead of building a release one (CI passes the test
+# build's, already compiled: its times are not release figures). --install-only: only install
+# libompl-dev, Eigen and g++ when missing, then stop.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 
-quick=0
-seeds="" worlds="" iterations="" repeat="" out=""
+quick=0 install_only=0
+seeds="" worlds="" iterations="" repeat="" out="" tidepath=""
 usage() {
-    sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+    sed -n '2,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
     exit "${1:-2}"
 }
 while [ $# -gt 0 ]; do
@@ -30,6 +34,8 @@ while [ $# -gt 0 ]; do
         --iterations) iterations=${2:?--iterations N}; shift ;;
         --repeat) repeat=${2:?--repeat R}; shift ;;
         --out) out=${2:?--out DIR}; shift ;;
+        --tidepath) tidepath=${2:?--tidepath BIN}; shift ;;
+        --install-only) install_only=1 ;;
         -h|--help) usage 0 ;;
         *) echo "run.sh: unknown argument $1" >&2; usage ;;
     esac
@@ -67,6 +73,7 @@ if [ ${#need_pkgs[@]} -gt 0 ]; then
     $sudo apt-get update -q >&2
     $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${need_pkgs[@]}" >&2
 fi
+[ "$install_only" = 1 ] && exit 0
 ompl_inc=$(dpkg -L libompl-dev 2>/dev/null | grep '/ompl/geometric/planners/rrt/RRTstar\.h$' | head -n 1 || true)
 ompl_inc=${ompl_inc%/ompl/geometric/planners/rrt/RRTstar.h}
 [ -n "$ompl_inc" ] || ompl_inc=$(find_ompl_include) || { echo "run.sh: OMPL headers not found after install" >&2; exit 1; }
@@ -80,10 +87,16 @@ if [ ! -x "$ompl_bin" ] || [ "$here/ompl_rrtstar.cpp" -nt "$ompl_bin" ]; then
     g++ -O2 -std=c++17 -I"$ompl_inc" -I"$eigen_inc" "$here/ompl_rrtstar.cpp" -o "$ompl_bin" -lompl
 fi
 
-# (c) tidepath, release build.
-say "building tidepath (cargo build --release -p tidepath-cli)"
-(cd "$root" && cargo build --release -q -p tidepath-cli)
-tidepath="$root/target/release/tidepath"
+# (c) tidepath, release build (or the one given with --tidepath).
+if [ -n "$tidepath" ]; then
+    [ -x "$tidepath" ] || { echo "run.sh: --tidepath $tidepath is not an executable" >&2; exit 2; }
+    tidepath="$(cd "$(dirname "$tidepath")" && pwd)/$(basename "$tidepath")"
+    say "using $tidepath (not built here: its times are those of however it was built)"
+else
+    say "building tidepath (cargo build --release -p tidepath-cli)"
+    (cd "$root" && cargo build --release -q -p tidepath-cli)
+    tidepath="$root/target/release/tidepath"
+fi
 have_rrt_star=0
 planners=$("$tidepath" planners)
 grep -q '^  rrt-star ' <<< "$planners" && have_rrt_star=1
