@@ -8,8 +8,8 @@ to a few hundred MB instead of 7.4 GB), to measure how fast tidepath reads a sma
 file of that size:
 
     python3 scripts/make_gebco_like.py /tmp/gebco_like.nc
-    TIDEPATH_GEBCO_LIKE=/tmp/gebco_like.nc cargo test --release -p tidepath --test geodata \
-        gebco_layout_subset -- --ignored --nocapture
+    TIDEPATH_GEBCO_LIKE=/tmp/gebco_like.nc cargo test --release -p tidepath-io --test io \
+        geodata::gebco_layout_subset -- --ignored --nocapture
 
 Needs numpy and netCDF4 (pip install numpy netCDF4).
 """

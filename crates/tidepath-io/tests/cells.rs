@@ -2,7 +2,7 @@
 //! and a per-cell current. A* searches the map's own cells; routes never enter a land cell
 //! (re-checked by dense sampling); the lengths are those of the grid and of the geometry.
 
-mod common;
+use crate::common;
 
 use tidepath::planner::Status;
 use tidepath_io::scenario::{PlanRequest, Scenario};

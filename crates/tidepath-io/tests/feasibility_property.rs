@@ -4,7 +4,7 @@
 //! containment tests, own clock: the crab travel model integrated piece by piece as documented,
 //! sampled densely inside every piece at the time the vehicle is there).
 
-mod common;
+use crate::common;
 
 use proptest::prelude::*;
 use tidepath::geom::{Aabb, Vec2, Vec3};

@@ -3,12 +3,12 @@
 //! end in an input error or a result: no panic, bounded time, and no partial output file.
 //!
 //! CI runs `TIDEPATH_FUZZ_CASES` cases (default 300, seeded, well under a minute). A longer
-//! run: `TIDEPATH_FUZZ_CASES=100000 TIDEPATH_FUZZ_SEED=7 cargo test --release -p tidepath
-//! --test fuzz -- --nocapture`. A failing case prints its seed and case number; rerun it with
+//! run: `TIDEPATH_FUZZ_CASES=100000 TIDEPATH_FUZZ_SEED=7 cargo test --release -p tidepath-io
+//! --test io fuzz:: -- --nocapture`. A failing case prints its seed and case number; rerun it with
 //! `TIDEPATH_FUZZ_SEED=S TIDEPATH_FUZZ_FROM=N TIDEPATH_FUZZ_CASES=1`.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -376,6 +376,15 @@ fn env(name: &str, default: u64) -> u64 {
     std::env::var(name).ok().and_then(|v| v.parse().ok()).unwrap_or(default)
 }
 
+/// Tells the hang watchdog to stop when dropped.
+struct WatchdogOff(Arc<AtomicBool>);
+
+impl Drop for WatchdogOff {
+    fn drop(&mut self) {
+        self.0.store(true, Ordering::Relaxed);
+    }
+}
+
 #[test]
 fn fuzz_scenarios_plans_and_outputs() {
     let cases = env("TIDEPATH_FUZZ_CASES", 300);
@@ -390,8 +399,15 @@ fn fuzz_scenarios_plans_and_outputs() {
     let watched = current.clone();
     let started = Arc::new(std::sync::Mutex::new(Instant::now()));
     let clock = started.clone();
+    // The watchdog ends with this test, passed or failed (the guard's drop): the test binary
+    // goes on with other tests afterwards.
+    let finished = WatchdogOff(Arc::new(AtomicBool::new(false)));
+    let over = finished.0.clone();
     std::thread::spawn(move || loop {
         std::thread::sleep(Duration::from_secs(1));
+        if over.load(Ordering::Relaxed) {
+            return;
+        }
         let since = clock.lock().unwrap().elapsed();
         if since > HANG {
             eprintln!("fuzz: case {} has run for {since:?}: a hang", watched.load(Ordering::Relaxed));
@@ -412,6 +428,7 @@ fn fuzz_scenarios_plans_and_outputs() {
         }
         slowest = slowest.max((t0.elapsed(), n));
     }
+    drop(finished);
     eprintln!(
         "fuzz: {cases} cases in {:.1} s (slowest: case {} in {:.2} s); {} scenarios loaded, {} planned, {} plan files parsed, {} evaluated, {} output sets written",
         t.elapsed().as_secs_f64(),

@@ -20,7 +20,7 @@ use tidepath_io::geodata::currents::read_currents;
 use tidepath_io::geodata::netcdf::read_bathymetry;
 use tidepath_io::geodata::{esri_ascii, geotiff, DataFile, GeoBox};
 
-mod common;
+use crate::common;
 
 const FIXTURES: &[&str] = &[
     "bathy_classic.nc",

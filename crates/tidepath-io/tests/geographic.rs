@@ -2,7 +2,7 @@
 //! re-checked on the real seabed; a depth band below the strait's sill is reported unreachable
 //! with the sill named in degrees; boxes and positions in degrees are checked.
 
-mod common;
+use crate::common;
 
 use tidepath::planner::Status;
 use tidepath_io::scenario::{builtin, load, PlanRequest, Scenario};

@@ -5,7 +5,7 @@
 //! the quickest routes behave as the paper says (they keep to the larger waves, ride the
 //! current), measured against the shortest ones.
 
-mod common;
+use crate::common;
 
 use tidepath::geom::Vec3;
 use tidepath::world::{Terrain, Waves};

@@ -3,7 +3,7 @@
 //! curve at most 1 / radius, clearance at the vehicle's own clock), Hybrid-A* and Theta* with
 //! Dubins smoothing are feasible on `salish-strait-turns`, and without a radius nothing changes.
 
-mod common;
+use crate::common;
 
 use tidepath::planner::PLANNERS;
 use tidepath_io::scenario::{builtin, PlanRequest, Scenario};

@@ -4,7 +4,7 @@
 //! naming the field (`planner.params.de.f: must be in (0, 2], got 3`). No list of ids here:
 //! the registries are read.
 
-mod common;
+use crate::common;
 
 use common::toys;
 use tidepath::params::{boundary_values, ParamSpec};

@@ -1,7 +1,7 @@
 //! The planning interface, tested once for every registered planner and for the kinds of
 //! planner the registry must accept: missions, fleets, status, termination, determinism.
 
-mod common;
+use crate::common;
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;

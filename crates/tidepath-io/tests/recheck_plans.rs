@@ -3,10 +3,12 @@
 //! currents. A plan the evaluation calls feasible must pass; the number of feasible plans
 //! re-checked is asserted so the test cannot pass by checking nothing.
 
-mod common;
+use crate::common;
 /// Fleets' separation re-checked the same way.
+#[path = "fleet/mod.rs"]
 mod fleet;
 /// Simulations re-checked the same way.
+#[path = "simulate/mod.rs"]
 mod simulate;
 
 use tidepath::planner::PLANNERS;

@@ -2,7 +2,7 @@
 //! currents, the Zermelo optimum in a shear, the visibility graph around a headland, proved
 //! unreachable goals, and the soundness of the reachability check.
 
-mod common;
+use crate::common;
 
 use tidepath::planner::{Status, PLANNERS};
 use tidepath_io::scenario::{builtin, PlanRequest, Scenario};

@@ -2,7 +2,7 @@
 //! plan in a 3-D world of moving spheres and a time-varying jet clear by the independent
 //! re-checker, and the distance left reported when the budget is too small.
 
-mod common;
+use crate::common;
 // The search graphs they give back (its own file; one test binary builds faster than two).
 #[path = "sampling/graphs.rs"]
 mod graphs;
