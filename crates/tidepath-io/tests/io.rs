@@ -32,3 +32,21 @@ mod sampling;
 mod scenario_validation;
 mod seabed_envelope;
 mod waves;
+
+/// With `autotests = false`, a file added to `tests/` runs only once declared above: this
+/// fails naming any `tests/*.rs` that is neither declared here nor a binary of its own.
+#[test]
+fn every_test_file_is_declared() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
+    let root = std::fs::read_to_string(dir.join("io.rs")).unwrap();
+    let mut missing = Vec::new();
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let name = entry.unwrap().file_name().into_string().unwrap();
+        let Some(module) = name.strip_suffix(".rs") else { continue };
+        if !["io", "budgets"].contains(&module) && !root.contains(&format!("\nmod {module};")) {
+            missing.push(name);
+        }
+    }
+    missing.sort();
+    assert!(missing.is_empty(), "tests/ files not declared in tests/io.rs: {missing:?}");
+}
